@@ -1,0 +1,73 @@
+#include <dpana/contact/problem.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dpana
+{
+  namespace contact
+  {
+    void
+    ContactProblem::validate() const
+    {
+      auto fail = [](const std::string &message) {
+        throw std::invalid_argument("contact problem: " + message);
+      };
+      if (dim != 2 && dim != 3)
+        fail("dim must be 2 or 3, got " + std::to_string(dim));
+      const Eigen::Index size = D.size();
+      if (size % dim != 0)
+        fail("D has size " + std::to_string(size) +
+             ", not a multiple of dim = " + std::to_string(dim));
+      const Eigen::Index n = size / dim;
+      if (A.rows() != size || A.cols() != size)
+        fail("A must be " + std::to_string(size) + " x " +
+             std::to_string(size));
+      if (mu.size() != n)
+        fail("mu must have one entry per contact element (" +
+             std::to_string(n) + ")");
+      if (!A.allFinite())
+        fail("A has a non-finite entry");
+      if (!D.allFinite())
+        fail("D has a non-finite entry");
+      if (!mu.allFinite())
+        fail("mu has a non-finite entry");
+      for (Eigen::Index j = 0; j < n; ++j)
+        if (mu[j] < 0)
+          fail("mu[" + std::to_string(j) + "] = " + std::to_string(mu[j]) +
+               " is negative");
+      const double scale = A.cwiseAbs().maxCoeff();
+      if ((A - A.transpose()).cwiseAbs().maxCoeff() > 1e-10 * scale)
+        fail("A is not symmetric");
+      if (dim == 2 && cone != ConeModel::interval)
+        fail("in 2D the friction set is the interval (cone = interval)");
+      if (dim == 3 && cone == ConeModel::interval)
+        fail("in 3D the friction set is a polygon or a disc, not an interval");
+      if (cone == ConeModel::polygon && polygon_sides < 3)
+        fail("polygon_sides must be >= 3, got " +
+             std::to_string(polygon_sides));
+      if (G.rows() != e.size())
+        fail("G has " + std::to_string(G.rows()) + " rows but e has size " +
+             std::to_string(e.size()));
+      if (G.rows() > 0 && G.cols() != size)
+        fail("G must have " + std::to_string(size) + " columns");
+      if (!G.allFinite() || !e.allFinite())
+        fail("G or e has a non-finite entry");
+    }
+
+    std::string
+    to_string(const ContactStatus status)
+    {
+      switch (status)
+        {
+          case ContactStatus::separated:
+            return "separated";
+          case ContactStatus::stick:
+            return "stick";
+          case ContactStatus::slip:
+            return "slip";
+        }
+      return "unknown";
+    }
+  } // namespace contact
+} // namespace dpana
