@@ -1,0 +1,150 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_geometry_geometry_h
+#define dpana_geometry_geometry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  namespace geometry
+  {
+    /**
+     * The geometry of one body: the parameters of the "Geometry" subsection
+     * and the simplex mesh (triangles in 2D, tetrahedra in 3D) built from
+     * them.
+     *
+     * The generated types are
+     * - `rectangle` (2D) and `box` (3D): an axis-parallel brick with optional
+     *   tensor-product grading towards a plane, an edge or a point;
+     * - `half disc` and `quarter disc` (2D), `half cylinder` (3D): the lower
+     *   half of a disc (the cylinder of the Hertz scenes, touching the ground
+     *   at its lowest point), with optional local refinement around that
+     *   point;
+     * - `half annulus` and `quarter annulus` (2D): the lower half (or the
+     *   lower right quarter) of an annulus, with optional local refinement
+     *   around the lowest point of the inner circle;
+     * - `gmsh`: an ASCII gmsh file (format 2.2 or 4.1) with named physical
+     *   groups.
+     *
+     * Every boundary face of a created mesh carries one of the ids listed by
+     * boundary_names(). All manifold ids of the created mesh are flat: the
+     * curved boundaries are polygons whose vertices lie exactly on the
+     * circles (see doc/geometry.md), which is what a MappingFE of degree one
+     * sees anyway.
+     *
+     * All lengths are in mm.
+     */
+    template <int dim>
+    class Geometry
+    {
+    public:
+      Geometry();
+
+      /**
+       * Declares the entries of the "Geometry" subsection. The caller has
+       * already entered that subsection.
+       */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Reads the entries (the caller has entered the subsection). Throws
+       * dpana::InputError with a one-line message naming the parameter or the
+       * file on bad values, e.g. a missing mesh file.
+       */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Builds the simplex mesh, refined as asked, with boundary ids set and
+       * all manifold ids flat. The triangulation must be empty.
+       */
+      void
+      create_triangulation(dealii::Triangulation<dim> &tria) const;
+
+      /**
+       * Name -> boundary id of every named boundary of the mesh this object
+       * creates.
+       */
+      const std::map<std::string, dealii::types::boundary_id> &
+      boundary_names() const;
+
+      /**
+       * The boundary id of a named boundary. Throws dpana::InputError
+       * "no boundary named 'x' (this geometry has: a, b, c)".
+       */
+      dealii::types::boundary_id
+      boundary_id(const std::string &name) const;
+
+      /**
+       * A one-line description for the log, e.g. "rectangle 40 x 40, 16 x 16
+       * subdivisions".
+       */
+      std::string
+      description() const;
+
+    private:
+      enum class Type
+      {
+        rectangle,
+        box,
+        half_disc,
+        quarter_disc,
+        half_cylinder,
+        half_annulus,
+        quarter_annulus,
+        gmsh
+      };
+
+      Type         type;
+      std::string  type_name;
+      unsigned int n_global_refinements;
+
+      // Rectangle and box.
+      dealii::Point<dim>        lower_corner;
+      dealii::Point<dim>        upper_corner;
+      std::vector<unsigned int> subdivisions;
+      dealii::Point<dim>        grading_centre;
+      std::vector<double>       grading_exponents;
+
+      // Discs, cylinder and annuli.
+      dealii::Point<dim> centre;
+      double             radius;
+      double             inner_radius;
+      double             outer_radius;
+      double             length;
+      unsigned int       n_axial_subdivisions;
+      unsigned int       n_contact_refinements;
+      double             contact_refinement_radius;
+
+      // Gmsh files.
+      std::string mesh_file;
+
+      std::map<std::string, dealii::types::boundary_id> names;
+
+      void
+      create_brick(dealii::Triangulation<dim> &tria) const;
+
+      void
+      create_curved(dealii::Triangulation<dim> &tria) const;
+
+      void
+      read_gmsh(dealii::Triangulation<dim> &tria) const;
+
+      void
+      check_boundary_ids(const dealii::Triangulation<dim> &tria) const;
+    };
+  } // namespace geometry
+} // namespace dpana
+
+#endif
