@@ -1,0 +1,227 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_linear_algebra_sparse_cholesky_h
+#define dpana_linear_algebra_sparse_cholesky_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  namespace linear_algebra
+  {
+    /**
+     * Thrown when the Cholesky factorisation breaks down because the matrix
+     * is not symmetric positive definite. For a stiffness matrix this almost
+     * always means that the body is not held: some rigid motion is left free
+     * by the constraints.
+     */
+    class NotPositiveDefiniteError : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    /**
+     * A sparse Cholesky factorisation $K = L L^T$ of a symmetric positive
+     * definite matrix, computed once by the supernodal method of CHOLMOD
+     * (SuiteSparse) and then used for as many right-hand sides as needed.
+     *
+     * <h3>Two ways of handling constraints</h3>
+     *
+     * The stiffness matrix of a body is assembled by deal.II with
+     * AffineConstraints::distribute_local_to_global(). Every constrained
+     * degree of freedom $u_i = \sum_j a_{ij} u_j + g_i$ is thereby eliminated:
+     * writing $u = M v + \bar u$, where $v$ are the unconstrained (free)
+     * degrees of freedom, $M$ the matrix of the constraints and $\bar u$ the
+     * inhomogeneities, the rows and columns of the free degrees of freedom
+     * hold the reduced matrix $K_r = M^T K M$ and the right-hand side holds
+     * $f_r = M^T (f - K \bar u)$, while the rows and columns of the
+     * constrained degrees of freedom are empty except for a positive
+     * diagonal entry.
+     *
+     * - factorize(K) factors the whole matrix, artificial diagonal entries
+     *   included. solve() is then the plain $K^{-1} b$: the caller is
+     *   responsible for condensing $b$ and distributing the result.
+     *
+     * - factorize(K, constraints) extracts the reduced matrix $K_r$ on the
+     *   free degrees of freedom only (the constrained rows and columns are
+     *   dropped) and factors it. This is the form of the formulation
+     *   (@f$A = V_r^T K_r^{-1} V_r@f$): solve(b) then takes a full-length
+     *   vector of nodal forces $b$ and returns the full-length displacement
+     *   $u = M K_r^{-1} M^T b$ that satisfies the homogeneous constraints
+     *   ($\bar u = 0$), which is what a unit contact traction produces.
+     *   The reduced quantities themselves are available through restrict(),
+     *   solve_reduced() and extend(). The body's own solve, with the
+     *   inhomogeneous constraints, is solve_condensed().
+     *
+     * Dropping the constrained rows rather than keeping their artificial
+     * diagonal entries leaves the factor with only physical unknowns, so a
+     * breakdown of the factorisation is always a property of the body (a
+     * free rigid motion), never of the scaling of the constraints.
+     *
+     * <h3>Many right-hand sides</h3>
+     *
+     * solve(const Eigen::MatrixXd &) hands the right-hand sides to CHOLMOD
+     * in blocks of block_size() columns: each block is one forward and one
+     * backward substitution sweep through the supernodal factor, which is
+     * much faster than the same number of single-vector solves because it
+     * works with dense matrix-matrix kernels (BLAS 3).
+     */
+    class SparseCholesky
+    {
+    public:
+      SparseCholesky();
+      ~SparseCholesky();
+      SparseCholesky(const SparseCholesky &) = delete;
+      SparseCholesky &
+      operator=(const SparseCholesky &) = delete;
+
+      /**
+       * Factor the whole matrix @p K. Only its lower triangle is read; the
+       * matrix must be symmetric. Throws NotPositiveDefiniteError if it is
+       * not positive definite.
+       */
+      void
+      factorize(const dealii::SparseMatrix<double> &K);
+
+      /**
+       * Factor an Eigen sparse matrix (lower triangle read).
+       */
+      void
+      factorize(const Eigen::SparseMatrix<double> &K);
+
+      /**
+       * Factor the reduced matrix $K_r$ on the degrees of freedom that
+       * @p constraints leaves free. @p K must have been assembled with these
+       * (closed) constraints. The constraints are copied.
+       */
+      void
+      factorize(const dealii::SparseMatrix<double>      &K,
+                const dealii::AffineConstraints<double> &constraints);
+
+      /**
+       * True once a factorisation is available.
+       */
+      bool
+      is_factorized() const;
+
+      /**
+       * True if the factorisation is of a reduced system.
+       */
+      bool
+      is_reduced() const;
+
+      /**
+       * Length of the vectors taken and returned by solve(): the number of
+       * rows of the matrix handed to factorize().
+       */
+      unsigned int
+      size() const;
+
+      /**
+       * Number of unknowns actually factored: the free degrees of freedom of
+       * a reduced system, otherwise size().
+       */
+      unsigned int
+      n_unknowns() const;
+
+      /**
+       * The free degrees of freedom, in the order of the reduced unknowns
+       * (all of 0..size()-1 when the system is not reduced).
+       */
+      const std::vector<unsigned int> &
+      free_dofs() const;
+
+      /**
+       * Number of right-hand sides handed to CHOLMOD at once (default 64).
+       */
+      void
+      set_block_size(const unsigned int block_size);
+      unsigned int
+      block_size() const;
+
+      /**
+       * Solve for one right-hand side of length size(). For a reduced
+       * system, $b$ is a vector of nodal forces and the result satisfies the
+       * homogeneous constraints (see the class documentation).
+       */
+      Eigen::VectorXd
+      solve(const Eigen::VectorXd &b) const;
+
+      /**
+       * Solve for the columns of @p B (size() rows), in blocks of
+       * block_size() columns.
+       */
+      Eigen::MatrixXd
+      solve(const Eigen::MatrixXd &B) const;
+
+      /**
+       * $M^T B$: fold the rows of constrained degrees of freedom into their
+       * masters and keep the free rows (n_unknowns() rows result).
+       */
+      Eigen::MatrixXd restrict(const Eigen::MatrixXd &B) const;
+
+      /**
+       * $K_r^{-1} B_r$ for reduced right-hand sides (n_unknowns() rows), in
+       * blocks.
+       */
+      Eigen::MatrixXd
+      solve_reduced(const Eigen::MatrixXd &B_r) const;
+
+      /**
+       * $M X_r$ (+ $\bar u$ in every column unless @p homogeneous): fill the
+       * free rows from @p X_r and compute the constrained ones.
+       */
+      Eigen::MatrixXd
+      extend(const Eigen::MatrixXd &X_r, const bool homogeneous = true) const;
+
+      /**
+       * The body's own solve of a reduced system: @p f_condensed is the
+       * right-hand side assembled with the (inhomogeneous) constraints, so it
+       * already holds $M^T(f - K\bar u)$ in its free rows. On return @p u
+       * holds $M K_r^{-1} f_r + \bar u$.
+       */
+      void
+      solve_condensed(const dealii::Vector<double> &f_condensed,
+                      dealii::Vector<double>       &u) const;
+
+    private:
+      void
+      factorize_lower(const Eigen::SparseMatrix<double> &K_lower);
+
+      struct Impl;
+      std::unique_ptr<Impl> impl;
+
+      unsigned int              n_rows;
+      unsigned int              n_block;
+      std::vector<unsigned int> free;
+
+      // For every degree of freedom, its index among the free ones, or -1
+      // if it is constrained.
+      std::vector<int> reduced_index;
+
+      // The constraint lines, copied: u_i = sum_j a_ij u_j + g_i, with all j
+      // free (the constraints are closed).
+      struct Line
+      {
+        unsigned int                                 index;
+        std::vector<std::pair<unsigned int, double>> entries;
+        double                                       inhomogeneity;
+      };
+      std::vector<Line> lines;
+    };
+  } // namespace linear_algebra
+} // namespace dpana
+
+#endif

@@ -1,0 +1,336 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+
+#include <dpana/linear_algebra/sparse_cholesky.h>
+
+#include <Eigen/CholmodSupport>
+
+#include <algorithm>
+#include <sstream>
+
+namespace dpana
+{
+  namespace linear_algebra
+  {
+    namespace
+    {
+      // CHOLMOD's supernodal LL^T through Eigen's wrapper. The wrapper keeps
+      // the column at which a failed factorisation broke down ("minor") to
+      // itself; this subclass makes it visible for the error message.
+      class SupernodalLLT
+        : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>,
+                                             Eigen::Lower>
+      {
+      public:
+        long
+        failed_column() const
+        {
+          return this->m_cholmodFactor ?
+                   static_cast<long>(this->m_cholmodFactor->minor) :
+                   -1;
+        }
+      };
+    } // namespace
+
+
+    struct SparseCholesky::Impl
+    {
+      SupernodalLLT llt;
+      bool          factorized = false;
+    };
+
+
+
+    SparseCholesky::SparseCholesky()
+      : impl(std::make_unique<Impl>())
+      , n_rows(0)
+      , n_block(64)
+    {
+      // CHOLMOD prints its warnings (e.g. "not positive definite") itself
+      // unless told not to; dpana reports them through exceptions instead.
+      impl->llt.cholmod().print = 0;
+    }
+
+
+
+    SparseCholesky::~SparseCholesky() = default;
+
+
+
+    void
+    SparseCholesky::factorize(const dealii::SparseMatrix<double> &K)
+    {
+      AssertThrow(K.m() == K.n(), dealii::ExcNotQuadratic());
+      n_rows = K.m();
+      free.resize(n_rows);
+      for (unsigned int i = 0; i < n_rows; ++i)
+        free[i] = i;
+      reduced_index.assign(n_rows, 0);
+      for (unsigned int i = 0; i < n_rows; ++i)
+        reduced_index[i] = i;
+      lines.clear();
+
+      std::vector<Eigen::Triplet<double>> triplets;
+      triplets.reserve(K.n_nonzero_elements() / 2 + n_rows);
+      for (auto it = K.begin(); it != K.end(); ++it)
+        if (it->column() <= it->row() && it->value() != 0.0)
+          triplets.emplace_back(it->row(), it->column(), it->value());
+      Eigen::SparseMatrix<double> K_lower(n_rows, n_rows);
+      K_lower.setFromTriplets(triplets.begin(), triplets.end());
+      factorize_lower(K_lower);
+    }
+
+
+
+    void
+    SparseCholesky::factorize(const Eigen::SparseMatrix<double> &K)
+    {
+      AssertThrow(K.rows() == K.cols(), dealii::ExcNotQuadratic());
+      n_rows = K.rows();
+      free.resize(n_rows);
+      reduced_index.resize(n_rows);
+      for (unsigned int i = 0; i < n_rows; ++i)
+        free[i] = reduced_index[i] = i;
+      lines.clear();
+      Eigen::SparseMatrix<double> K_lower = K.triangularView<Eigen::Lower>();
+      factorize_lower(K_lower);
+    }
+
+
+
+    void
+    SparseCholesky::factorize(
+      const dealii::SparseMatrix<double>      &K,
+      const dealii::AffineConstraints<double> &constraints)
+    {
+      AssertThrow(K.m() == K.n(), dealii::ExcNotQuadratic());
+      AssertThrow(constraints.is_closed(),
+                  dealii::ExcMessage(
+                    "SparseCholesky: the constraints must be closed."));
+      n_rows = K.m();
+
+      // Number the free degrees of freedom consecutively and copy the
+      // constraint lines.
+      reduced_index.assign(n_rows, -1);
+      free.clear();
+      for (unsigned int i = 0; i < n_rows; ++i)
+        if (!constraints.is_constrained(i))
+          {
+            reduced_index[i] = free.size();
+            free.push_back(i);
+          }
+      lines.clear();
+      for (const auto &line : constraints.get_lines())
+        {
+          AssertThrow(line.index < n_rows, dealii::ExcInternalError());
+          Line l;
+          l.index         = line.index;
+          l.inhomogeneity = line.inhomogeneity;
+          for (const auto &entry : line.entries)
+            {
+              // Closed constraints refer to free degrees of freedom only.
+              Assert(reduced_index[entry.first] >= 0,
+                     dealii::ExcInternalError());
+              l.entries.emplace_back(entry.first, entry.second);
+            }
+          lines.push_back(std::move(l));
+        }
+
+      // The reduced matrix: the free rows and columns of the condensed
+      // matrix, lower triangle.
+      const unsigned int                  n_free = free.size();
+      std::vector<Eigen::Triplet<double>> triplets;
+      triplets.reserve(K.n_nonzero_elements() / 2 + n_free);
+      for (auto it = K.begin(); it != K.end(); ++it)
+        {
+          const int r = reduced_index[it->row()];
+          const int c = reduced_index[it->column()];
+          if (r >= 0 && c >= 0 && c <= r && it->value() != 0.0)
+            triplets.emplace_back(r, c, it->value());
+        }
+      Eigen::SparseMatrix<double> K_lower(n_free, n_free);
+      K_lower.setFromTriplets(triplets.begin(), triplets.end());
+      factorize_lower(K_lower);
+    }
+
+
+
+    void
+    SparseCholesky::factorize_lower(const Eigen::SparseMatrix<double> &K_lower)
+    {
+      impl->factorized = false;
+      AssertThrow(K_lower.rows() > 0,
+                  dealii::ExcMessage(
+                    "SparseCholesky: there is nothing to factor (no free "
+                    "degrees of freedom)."));
+      impl->llt.analyzePattern(K_lower);
+      AssertThrow(impl->llt.info() == Eigen::Success,
+                  dealii::ExcMessage(
+                    "SparseCholesky: CHOLMOD's symbolic analysis failed."));
+      impl->llt.factorize(K_lower);
+      if (impl->llt.info() != Eigen::Success)
+        {
+          std::ostringstream message;
+          message << "sparse Cholesky factorisation failed: the matrix ("
+                  << K_lower.rows()
+                  << " unknowns) is not positive definite (breakdown at "
+                     "pivot "
+                  << impl->llt.failed_column()
+                  << "); a stiffness matrix is singular when the body is "
+                     "not held against rigid motions";
+          throw NotPositiveDefiniteError(message.str());
+        }
+      impl->factorized = true;
+    }
+
+
+
+    bool
+    SparseCholesky::is_factorized() const
+    {
+      return impl->factorized;
+    }
+
+
+
+    bool
+    SparseCholesky::is_reduced() const
+    {
+      return free.size() != n_rows || !lines.empty();
+    }
+
+
+
+    unsigned int
+    SparseCholesky::size() const
+    {
+      return n_rows;
+    }
+
+
+
+    unsigned int
+    SparseCholesky::n_unknowns() const
+    {
+      return free.size();
+    }
+
+
+
+    const std::vector<unsigned int> &
+    SparseCholesky::free_dofs() const
+    {
+      return free;
+    }
+
+
+
+    void
+    SparseCholesky::set_block_size(const unsigned int block_size)
+    {
+      AssertThrow(block_size > 0,
+                  dealii::ExcMessage("The block size must be positive."));
+      n_block = block_size;
+    }
+
+
+
+    unsigned int
+    SparseCholesky::block_size() const
+    {
+      return n_block;
+    }
+
+
+
+    Eigen::MatrixXd SparseCholesky::restrict(const Eigen::MatrixXd &B) const
+    {
+      AssertDimension(B.rows(), n_rows);
+      Eigen::MatrixXd B_r(free.size(), B.cols());
+      for (unsigned int k = 0; k < free.size(); ++k)
+        B_r.row(k) = B.row(free[k]);
+      // (M^T b)_j = b_j + sum over constrained i with entry a_ij of a_ij b_i.
+      for (const Line &line : lines)
+        for (const auto &[j, a] : line.entries)
+          B_r.row(reduced_index[j]) += a * B.row(line.index);
+      return B_r;
+    }
+
+
+
+    Eigen::MatrixXd
+    SparseCholesky::solve_reduced(const Eigen::MatrixXd &B_r) const
+    {
+      AssertThrow(impl->factorized,
+                  dealii::ExcMessage("SparseCholesky: factorize() first."));
+      AssertDimension(B_r.rows(), free.size());
+      Eigen::MatrixXd X_r(B_r.rows(), B_r.cols());
+      for (Eigen::Index j = 0; j < B_r.cols(); j += n_block)
+        {
+          const Eigen::Index width =
+            std::min<Eigen::Index>(n_block, B_r.cols() - j);
+          X_r.middleCols(j, width) = impl->llt.solve(B_r.middleCols(j, width));
+        }
+      return X_r;
+    }
+
+
+
+    Eigen::MatrixXd
+    SparseCholesky::extend(const Eigen::MatrixXd &X_r,
+                           const bool             homogeneous) const
+    {
+      AssertDimension(X_r.rows(), free.size());
+      Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n_rows, X_r.cols());
+      for (unsigned int k = 0; k < free.size(); ++k)
+        X.row(free[k]) = X_r.row(k);
+      for (const Line &line : lines)
+        {
+          if (!homogeneous)
+            X.row(line.index).setConstant(line.inhomogeneity);
+          for (const auto &[j, a] : line.entries)
+            X.row(line.index) += a * X.row(j);
+        }
+      return X;
+    }
+
+
+
+    Eigen::VectorXd
+    SparseCholesky::solve(const Eigen::VectorXd &b) const
+    {
+      const Eigen::MatrixXd X = solve(Eigen::MatrixXd(b));
+      return X.col(0);
+    }
+
+
+
+    Eigen::MatrixXd
+    SparseCholesky::solve(const Eigen::MatrixXd &B) const
+    {
+      AssertDimension(B.rows(), n_rows);
+      if (!is_reduced())
+        return solve_reduced(B);
+      return extend(solve_reduced(restrict(B)), true);
+    }
+
+
+
+    void
+    SparseCholesky::solve_condensed(const dealii::Vector<double> &f_condensed,
+                                    dealii::Vector<double>       &u) const
+    {
+      AssertDimension(f_condensed.size(), n_rows);
+      // The condensed right-hand side already is M^T (f - K u_bar) in its
+      // free rows: gather them, solve, and extend with the inhomogeneities.
+      Eigen::MatrixXd f_r(free.size(), 1);
+      for (unsigned int k = 0; k < free.size(); ++k)
+        f_r(k, 0) = f_condensed[free[k]];
+      const Eigen::MatrixXd x = extend(solve_reduced(f_r), false);
+      u.reinit(n_rows);
+      for (unsigned int i = 0; i < n_rows; ++i)
+        u[i] = x(i, 0);
+    }
+  } // namespace linear_algebra
+} // namespace dpana
