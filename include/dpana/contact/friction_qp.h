@@ -1,0 +1,107 @@
+// The tangential subproblem of the D-PANA splitting (the T-step): at fixed
+// normal tractions N, find T (and the multipliers beta of the purely
+// tangential equality rows, if any) solving
+// @f[
+//   \min_{T_j \in c_j P,\ G T = e} \tfrac12 T^T M T + c^T T ,
+// @f]
+// with M = A_TT (SPD), c = D_T + A_TN N (+ the fixed part of G^T alpha), the
+// radii c_j = -mu_j N_j >= 0, and P the unit interval, disc or polygon
+// (friction_set.h). Stationarity: w = M T + c + G^T beta, -w_j in the normal
+// cone of c_j P at T_j.
+//
+// Two solvers:
+//   - solve_pgs: block projected Gauss-Seidel. The local step is the EXACT
+//     minimiser of the (d-1)-dimensional block problem over c_j P with the
+//     diagonal block W_j = M_jj (FrictionSet::minimise: clipping, secular
+//     equation for the disc, facet/vertex enumeration for the polygon), not a
+//     Euclidean projection. With omega != 1 the relaxed point
+//     (1 - omega) T_j + omega T_j^loc is projected (Euclidean) back onto
+//     c_j P. Equality rows: method of multipliers, as in normal_lcp.h.
+//   - solve_active_set: a semismooth Newton method on the natural map
+//       F_j(T) = T_j - Pi_{c_j P}(T_j - rho_j w_j),   rho_j = (d-1)/tr W_j,
+//     (plus the rows G T - e when present, with beta as unknowns), using the
+//     derivative of the projection (identity inside, the tangent projector
+//     on a facet / (c/|y|)(I - yy^T/|y|^2) on the circle, zero at a vertex or
+//     an interval end). For the interval and the polygon the projection is
+//     piecewise linear and a full Newton step solves the QP restricted to the
+//     current faces exactly: this is the primal-dual active set method, and
+//     it stops as soon as the faces repeat. For the disc it converges
+//     locally quadratically. Globalised by an Armijo backtracking on
+//     1/2 ||F||^2; if the line search fails, a few PGS sweeps are made before
+//     Newton resumes.
+#ifndef dpana_contact_friction_qp_h
+#define dpana_contact_friction_qp_h
+
+#include <dpana/contact/friction_set.h>
+#include <dpana/contact/normal_lcp.h>
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace dpana
+{
+  namespace contact
+  {
+    class FrictionQp
+    {
+    public:
+      // M ((d-1) n square, SPD) and G (m x (d-1) n, m may be 0) are kept by
+      // reference and must outlive the object.
+      FrictionQp(const Eigen::MatrixXd &M,
+                 const Eigen::MatrixXd &G,
+                 const FrictionSet     &set,
+                 const InnerOptions    &options);
+
+      // radius[j] = c_j >= 0. T, beta: warm start on input, solution on
+      // output.
+      InnerResult
+      solve_pgs(const Eigen::VectorXd &c,
+                const Eigen::VectorXd &radius,
+                const Eigen::VectorXd &e,
+                Eigen::VectorXd       &T,
+                Eigen::VectorXd       &beta);
+
+      InnerResult
+      solve_active_set(const Eigen::VectorXd &c,
+                       const Eigen::VectorXd &radius,
+                       const Eigen::VectorXd &e,
+                       Eigen::VectorXd       &T,
+                       Eigen::VectorXd       &beta);
+
+    private:
+      int
+      pgs(const Eigen::MatrixXd     &matrix,
+          const std::vector<double> &blocks,
+          const Eigen::VectorXd     &rhs,
+          const Eigen::VectorXd     &radius,
+          Eigen::VectorXd           &T,
+          unsigned int               max_sweeps);
+
+      // Natural map F (size q + m) at (T, beta); records the regions.
+      void
+      natural_map(const Eigen::VectorXd &c,
+                  const Eigen::VectorXd &radius,
+                  const Eigen::VectorXd &e,
+                  const Eigen::VectorXd &T,
+                  const Eigen::VectorXd &beta,
+                  Eigen::VectorXd       &F);
+
+      const Eigen::MatrixXd &M;
+      const Eigen::MatrixXd &G;
+      const FrictionSet     &set;
+      InnerOptions           options;
+      unsigned int           m; // d - 1
+      unsigned int           n;
+      std::vector<double>    blocks, blocks_augmented; // row-major W_j
+      Eigen::VectorXd        rho;
+      double                 penalty = 0;
+      Eigen::MatrixXd        M_augmented;
+      Eigen::VectorXd        w, rhs, y;
+      std::vector<int>       region;
+      Eigen::MatrixXd        J;
+    };
+  } // namespace contact
+} // namespace dpana
+
+#endif

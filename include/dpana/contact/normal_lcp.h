@@ -1,0 +1,101 @@
+// The normal subproblem of the D-PANA splitting (the N-step): at fixed
+// tangential tractions T, find N (and the free multipliers alpha of the
+// equality rows, if any) solving the mixed linear complementarity problem
+// @f[
+//   \min_{N \le 0,\ G N = e} \tfrac12 N^T M N + b^T N
+//   \iff
+//   w = M N + b + G^T\alpha,\ N \le 0,\ w \le 0,\ N_j w_j = 0,\ G N = e,
+// @f]
+// with M = A_NN (SPD), b = D_N + A_NT T (+ the fixed part of G^T alpha).
+//
+// Two solvers:
+//   - solve_pgs: projected Gauss-Seidel with over-relaxation omega,
+//       N_j <- min(0, N_j - omega w_j / M_jj),
+//     keeping w = M N + b up to date by column updates (skipped for elements
+//     that stay separated). Stops when the largest change of a sweep is
+//     below tolerance * ||N||_inf. Equality rows are handled by the method of
+//     multipliers (augmented Lagrangian): PGS runs on M + rho G^T G with
+//     b + G^T (alpha - rho e), then alpha += rho (G N - e), until
+//     ||G N - e||_inf <= tolerance * (||G||_inf ||N||_inf + ||e||_inf).
+//   - solve_active_set: primal-dual active set (a semismooth Newton method
+//     for N = min(0, N - w / diag(M))): the contact set
+//     C = { j : N_j - w_j / M_jj < 0 } is guessed, the equality-constrained
+//     QP on C (N_j = 0 off C, w_j = 0 on C, G N = e) is solved exactly
+//     (Cholesky of M_CC and a Schur complement for alpha), and C is updated
+//     until it repeats, which gives the exact solution to round-off. A set
+//     that was already visited (cycling, possible for SPD matrices that are
+//     not M-matrices) triggers a few PGS sweeps from the current point before
+//     the active-set steps resume; the number of steps is capped.
+#ifndef dpana_contact_normal_lcp_h
+#define dpana_contact_normal_lcp_h
+
+#include <Eigen/Dense>
+
+#include <string>
+
+namespace dpana
+{
+  namespace contact
+  {
+    struct InnerOptions
+    {
+      double       tolerance       = 1e-12;
+      unsigned int max_iterations  = 10000;
+      double       over_relaxation = 1.0;
+      double       augmentation    = 1.0;
+    };
+
+    struct InnerResult
+    {
+      bool         converged  = false;
+      unsigned int iterations = 0; // sweeps (PGS) or active-set steps
+      std::string  message;
+    };
+
+    class NormalLcp
+    {
+    public:
+      // M (n x n, SPD) and G (m x n, m may be 0) are kept by reference and
+      // must outlive the object. Precomputes the diagonal and, with equality
+      // rows, the augmented matrix.
+      NormalLcp(const Eigen::MatrixXd &M,
+                const Eigen::MatrixXd &G,
+                const InnerOptions    &options);
+
+      // N, alpha: start values on input (warm start), solution on output.
+      InnerResult
+      solve_pgs(const Eigen::VectorXd &b,
+                const Eigen::VectorXd &e,
+                Eigen::VectorXd       &N,
+                Eigen::VectorXd       &alpha);
+
+      InnerResult
+      solve_active_set(const Eigen::VectorXd &b,
+                       const Eigen::VectorXd &e,
+                       Eigen::VectorXd       &N,
+                       Eigen::VectorXd       &alpha);
+
+    private:
+      // PGS sweeps on (matrix, rhs) until the relative change is below the
+      // tolerance or max_sweeps; returns the number of sweeps (negative if
+      // not converged).
+      int
+      pgs(const Eigen::MatrixXd &matrix,
+          const Eigen::VectorXd &inverse_diagonal,
+          const Eigen::VectorXd &rhs,
+          Eigen::VectorXd       &N,
+          unsigned int           max_sweeps);
+
+      const Eigen::MatrixXd &M;
+      const Eigen::MatrixXd &G;
+      InnerOptions           options;
+      Eigen::VectorXd        inverse_diagonal;
+      double                 penalty = 0;
+      Eigen::MatrixXd        M_augmented;
+      Eigen::VectorXd        inverse_diagonal_augmented;
+      Eigen::VectorXd        w, rhs;
+    };
+  } // namespace contact
+} // namespace dpana
+
+#endif

@@ -1,0 +1,99 @@
+// The driver of the contact solvers of dpana: one problem (problem.h), one
+// options structure, one function, one error measure (residual.h).
+//
+// Solvers (see doc/contact_solvers.md for the mathematics):
+//   - splitting_pgs, splitting_active_set: the D-PANA splitting of the seeds
+//     (T-step at fixed N, N-step at fixed T, repeated to a fixed point), with
+//     projected Gauss-Seidel or active-set / semismooth Newton inner solvers
+//     (normal_lcp.h, friction_qp.h; the loop itself in splitting.h);
+//   - nsgs: monolithic nonsmooth Gauss-Seidel over the contact elements with
+//     exact local Signorini-Coulomb solves (local_coulomb.h, nsgs.h);
+//   - alart_curnier: not implemented; solve() throws std::invalid_argument.
+#ifndef dpana_contact_solver_h
+#define dpana_contact_solver_h
+
+#include <dpana/contact/problem.h>
+#include <dpana/contact/residual.h>
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  namespace contact
+  {
+    enum class SolverType
+    {
+      splitting_pgs,        // D-PANA splitting, projected Gauss-Seidel inner
+      splitting_active_set, // D-PANA splitting, active-set inner solvers
+      nsgs,                 // monolithic nonsmooth Gauss-Seidel
+      alart_curnier         // semismooth Newton (not implemented: throws)
+    };
+
+    // "splitting_pgs", "splitting_active_set", "nsgs", "alart_curnier";
+    // throws std::invalid_argument for anything else.
+    SolverType
+    solver_type_from_string(const std::string &name);
+
+    std::string
+    to_string(SolverType type);
+
+    struct SolverOptions
+    {
+      SolverType type = SolverType::splitting_active_set;
+      // Stopping test on the shared residual (residual.h, natural_map).
+      double tolerance = 1e-10;
+      // Outer iterations: splitting steps (one T-step + one N-step) or NSGS
+      // sweeps.
+      unsigned int max_iterations = 1000;
+      // Inner solvers: relative tolerance and iteration cap (sweeps for PGS,
+      // Newton / active-set steps for the active-set solvers).
+      double       inner_tolerance      = 1e-12;
+      unsigned int inner_max_iterations = 10000;
+      // Relaxation omega in (0, 2) of PGS and NSGS.
+      double over_relaxation = 1.0;
+      // Stall detection: stop (converged = false) when the residual has not
+      // reached a new minimum (by a factor 0.99) for this many outer
+      // iterations.
+      unsigned int stall_iterations = 100;
+      // Tolerance of the status classification (relative to ||r||_inf).
+      double classification_tolerance = 1e-8;
+      // Equality rows handled by an augmented Lagrangian (PGS, NSGS): the
+      // penalty is augmentation * trace(A) / ||G||_F^2.
+      double augmentation = 1.0;
+    };
+
+    struct SolverResult
+    {
+      Eigen::VectorXd            r;     // tractions, interleaved (N_j, T_j)
+      Eigen::VectorXd            u;     // u = A r + D + G^T alpha
+      Eigen::VectorXd            alpha; // rigid-mode amplitudes (size m)
+      std::vector<ContactStatus> status;
+      bool                       converged  = false;
+      unsigned int               iterations = 0;
+      double                     residual   = 0; // == figures.natural_map
+      std::vector<double>        residual_history;
+      ResidualFigures            figures;
+      std::string                message; // why it stopped
+      // Work of the inner solvers (sum over the outer iterations of the
+      // splitting; 0 for NSGS).
+      unsigned long inner_iterations = 0;
+    };
+
+    // Validate the problem (and the options: one-line std::invalid_argument
+    // naming the field) and solve it. initial_r (size d n), when given,
+    // is the starting point (NSGS, splitting: its normal part).
+    SolverResult
+    solve(const ContactProblem  &problem,
+          const SolverOptions   &options,
+          const Eigen::VectorXd *initial_r = nullptr);
+
+    // Throws std::invalid_argument naming the offending option.
+    void
+    validate(const SolverOptions &options);
+  } // namespace contact
+} // namespace dpana
+
+#endif

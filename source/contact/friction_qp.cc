@@ -1,0 +1,351 @@
+#include <dpana/contact/friction_qp.h>
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dpana
+{
+  namespace contact
+  {
+    namespace
+    {
+      // Row-major copies of the diagonal (d-1)x(d-1) blocks of a matrix.
+      std::vector<double>
+      diagonal_blocks(const Eigen::MatrixXd &matrix,
+                      const unsigned int     m,
+                      const unsigned int     n)
+      {
+        std::vector<double> b(m * m * n);
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int a = 0; a < m; ++a)
+            for (unsigned int c = 0; c < m; ++c)
+              b[m * m * j + m * a + c] = matrix(m * j + a, m * j + c);
+        return b;
+      }
+    } // namespace
+
+
+
+    FrictionQp::FrictionQp(const Eigen::MatrixXd &M_,
+                           const Eigen::MatrixXd &G_,
+                           const FrictionSet     &set_,
+                           const InnerOptions    &options_)
+      : M(M_)
+      , G(G_)
+      , set(set_)
+      , options(options_)
+      , m(set_.tangential_dim())
+      , n(static_cast<unsigned int>(M_.rows()) / set_.tangential_dim())
+    {
+      blocks = diagonal_blocks(M, m, n);
+      rho.resize(n);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double tr = 0.0;
+          for (unsigned int a = 0; a < m; ++a)
+            tr += blocks[m * m * j + m * a + a];
+          rho[j] = m / tr;
+        }
+      if (G.rows() > 0)
+        {
+          const double g2 = G.squaredNorm();
+          penalty = (g2 > 0.0) ? options.augmentation * M.trace() / g2 : 0.0;
+          M_augmented = M;
+          M_augmented.noalias() += penalty * G.transpose() * G;
+          blocks_augmented = diagonal_blocks(M_augmented, m, n);
+        }
+      w.resize(M.rows());
+      rhs.resize(M.rows());
+      y.resize(M.rows());
+      region.resize(n);
+    }
+
+
+
+    // @sect4{Block projected Gauss-Seidel}
+    int
+    FrictionQp::pgs(const Eigen::MatrixXd     &matrix,
+                    const std::vector<double> &W,
+                    const Eigen::VectorXd     &right_hand_side,
+                    const Eigen::VectorXd     &radius,
+                    Eigen::VectorXd           &T,
+                    const unsigned int         max_sweeps)
+    {
+      const double omega = options.over_relaxation;
+      w.noalias()        = matrix * T;
+      w += right_hand_side;
+      bool fresh = true;
+      for (unsigned int sweep = 1; sweep <= max_sweeps; ++sweep)
+        {
+          double change = 0.0, size = 0.0;
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double *Wj = W.data() + m * m * j;
+              double       *Tj = T.data() + m * j;
+              double        g[2], t[2], delta[2];
+              // Linear term of the block problem: w_j - W_j T_j.
+              for (unsigned int a = 0; a < m; ++a)
+                {
+                  g[a] = w[m * j + a];
+                  for (unsigned int c = 0; c < m; ++c)
+                    g[a] -= Wj[m * a + c] * Tj[c];
+                }
+              set.minimise(radius[j], Wj, g, t);
+              if (omega != 1.0)
+                {
+                  double z[2];
+                  for (unsigned int a = 0; a < m; ++a)
+                    z[a] = (1.0 - omega) * Tj[a] + omega * t[a];
+                  set.project_tangential(radius[j], z, t);
+                }
+              bool moved = false;
+              for (unsigned int a = 0; a < m; ++a)
+                {
+                  delta[a] = t[a] - Tj[a];
+                  moved    = moved || (delta[a] != 0.0);
+                  change   = std::max(change, std::abs(delta[a]));
+                  size     = std::max(size, std::abs(t[a]));
+                  Tj[a]    = t[a];
+                }
+              if (moved)
+                {
+                  if (m == 1)
+                    w += delta[0] * matrix.col(j);
+                  else
+                    w += matrix.middleCols(2 * j, 2) *
+                         Eigen::Vector2d(delta[0], delta[1]);
+                }
+            }
+          if (change <= options.tolerance * size)
+            {
+              if (fresh)
+                return static_cast<int>(sweep);
+              w.noalias() = matrix * T;
+              w += right_hand_side;
+              fresh = true;
+            }
+          else
+            fresh = false;
+        }
+      return -static_cast<int>(max_sweeps);
+    }
+
+
+
+    InnerResult
+    FrictionQp::solve_pgs(const Eigen::VectorXd &c,
+                          const Eigen::VectorXd &radius,
+                          const Eigen::VectorXd &e,
+                          Eigen::VectorXd       &T,
+                          Eigen::VectorXd       &beta)
+    {
+      InnerResult result;
+      if (G.rows() == 0)
+        {
+          const int s = pgs(M, blocks, c, radius, T, options.max_iterations);
+          result.converged  = s > 0;
+          result.iterations = static_cast<unsigned int>(std::abs(s));
+          if (!result.converged)
+            result.message = "friction PGS: sweep limit reached";
+          return result;
+        }
+      if (beta.size() != G.rows())
+        beta = Eigen::VectorXd::Zero(G.rows());
+      unsigned int total = 0;
+      while (total < options.max_iterations)
+        {
+          rhs = c;
+          rhs.noalias() += G.transpose() * (beta - penalty * e);
+          const int s = pgs(M_augmented,
+                            blocks_augmented,
+                            rhs,
+                            radius,
+                            T,
+                            options.max_iterations - total);
+          total += static_cast<unsigned int>(std::abs(s));
+          const Eigen::VectorXd violation = G * T - e;
+          beta += penalty * violation;
+          const double scale =
+            G.lpNorm<Eigen::Infinity>() * T.lpNorm<Eigen::Infinity>() +
+            e.lpNorm<Eigen::Infinity>();
+          if (s > 0 &&
+              violation.lpNorm<Eigen::Infinity>() <= options.tolerance * scale)
+            {
+              result.converged  = true;
+              result.iterations = total;
+              return result;
+            }
+          if (s < 0)
+            break;
+        }
+      result.iterations = total;
+      result.message = "friction PGS: sweep limit reached with equality rows";
+      return result;
+    }
+
+
+
+    // @sect4{Semismooth Newton / active set}
+    void
+    FrictionQp::natural_map(const Eigen::VectorXd &c,
+                            const Eigen::VectorXd &radius,
+                            const Eigen::VectorXd &e,
+                            const Eigen::VectorXd &T,
+                            const Eigen::VectorXd &beta,
+                            Eigen::VectorXd       &F)
+    {
+      const Eigen::Index q = T.size();
+      w.noalias()          = M * T;
+      w += c;
+      if (G.rows() > 0)
+        w.noalias() += G.transpose() * beta;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double p[2];
+          for (unsigned int a = 0; a < m; ++a)
+            y[m * j + a] = T[m * j + a] - rho[j] * w[m * j + a];
+          region[j] = set.project_tangential(radius[j], y.data() + m * j, p);
+          for (unsigned int a = 0; a < m; ++a)
+            F[m * j + a] = T[m * j + a] - p[a];
+        }
+      if (G.rows() > 0)
+        F.tail(G.rows()).noalias() = G * T - e;
+      (void)q;
+    }
+
+
+
+    InnerResult
+    FrictionQp::solve_active_set(const Eigen::VectorXd &c,
+                                 const Eigen::VectorXd &radius,
+                                 const Eigen::VectorXd &e,
+                                 Eigen::VectorXd       &T,
+                                 Eigen::VectorXd       &beta)
+    {
+      const Eigen::Index q  = T.size();
+      const Eigen::Index me = G.rows();
+      InnerResult        result;
+      if (beta.size() != me)
+        beta = Eigen::VectorXd::Zero(me);
+      // Start from a feasible point.
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double p[2];
+          set.project_tangential(radius[j], T.data() + m * j, p);
+          for (unsigned int a = 0; a < m; ++a)
+            T[m * j + a] = p[a];
+        }
+
+      Eigen::VectorXd F(q + me), Ftrial(q + me), dx(q + me), Ttrial(q),
+        btrial(me);
+      J.resize(q + me, q + me);
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+      const double e_norm   = (me > 0) ? e.lpNorm<Eigen::Infinity>() : 0.0;
+      const double G_norm   = (me > 0) ? G.lpNorm<Eigen::Infinity>() : 0.0;
+      unsigned int failures = 0;
+
+      natural_map(c, radius, e, T, beta, F);
+      for (unsigned int step = 0; step <= options.max_iterations; ++step)
+        {
+          const double scale_T = std::max(T.lpNorm<Eigen::Infinity>(),
+                                          radius.lpNorm<Eigen::Infinity>());
+          const double err_T   = F.head(q).lpNorm<Eigen::Infinity>();
+          const double err_e =
+            (me > 0) ? F.tail(me).lpNorm<Eigen::Infinity>() : 0.0;
+          if (err_T <= options.tolerance * scale_T &&
+              err_e <= options.tolerance *
+                         (G_norm * T.lpNorm<Eigen::Infinity>() + e_norm))
+            {
+              result.converged  = true;
+              result.iterations = step;
+              return result;
+            }
+          if (step == options.max_iterations)
+            break;
+
+          // Generalised Jacobian:
+          //   rows of block j: I - D_j + rho_j D_j M_j,: | rho_j D_j G_j^T,
+          //   equality rows:   G | 0.
+          J.setZero();
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              double D[4];
+              set.projection_derivative(radius[j],
+                                        y.data() + m * j,
+                                        region[j],
+                                        D);
+              for (unsigned int a = 0; a < m; ++a)
+                {
+                  const Eigen::Index row = m * j + a;
+                  J(row, row) += 1.0;
+                  for (unsigned int b = 0; b < m; ++b)
+                    {
+                      const double Dab = D[m * a + b];
+                      if (Dab == 0.0)
+                        continue;
+                      J(row, m * j + b) -= Dab;
+                      J.row(row).head(q) += (rho[j] * Dab) * M.row(m * j + b);
+                      if (me > 0)
+                        J.row(row).tail(me) +=
+                          (rho[j] * Dab) * G.col(m * j + b).transpose();
+                    }
+                }
+            }
+          if (me > 0)
+            J.bottomLeftCorner(me, q) = G;
+          lu.compute(J);
+          dx = lu.solve(-F);
+          if (!dx.allFinite())
+            {
+              result.iterations = step;
+              result.message    = "friction active set: singular Jacobian";
+              return result;
+            }
+
+          // Armijo backtracking on 1/2 ||F||^2.
+          const double phi      = 0.5 * F.squaredNorm();
+          double       t        = 1.0;
+          bool         accepted = false;
+          for (unsigned int ls = 0; ls < 40; ++ls, t *= 0.5)
+            {
+              Ttrial = T + t * dx.head(q);
+              if (me > 0)
+                btrial = beta + t * dx.tail(me);
+              natural_map(c, radius, e, Ttrial, btrial, Ftrial);
+              if (0.5 * Ftrial.squaredNorm() <= (1.0 - 2e-4 * t) * phi)
+                {
+                  accepted = true;
+                  break;
+                }
+            }
+          if (accepted)
+            {
+              T.swap(Ttrial);
+              if (me > 0)
+                beta.swap(btrial);
+              F.swap(Ftrial);
+            }
+          else
+            {
+              // Globalisation fallback: a few PGS sweeps.
+              if (++failures > 50)
+                {
+                  result.iterations = step;
+                  result.message    = "friction active set: line search failed";
+                  return result;
+                }
+              InnerOptions saved     = options;
+              options.max_iterations = 10 * failures;
+              solve_pgs(c, radius, e, T, beta);
+              options = saved;
+              natural_map(c, radius, e, T, beta, F);
+            }
+        }
+      result.iterations = options.max_iterations;
+      result.message    = "friction active set: step limit reached";
+      return result;
+    }
+  } // namespace contact
+} // namespace dpana

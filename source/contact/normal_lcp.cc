@@ -1,0 +1,266 @@
+#include <dpana/contact/normal_lcp.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace dpana
+{
+  namespace contact
+  {
+    NormalLcp::NormalLcp(const Eigen::MatrixXd &M_,
+                         const Eigen::MatrixXd &G_,
+                         const InnerOptions    &options_)
+      : M(M_)
+      , G(G_)
+      , options(options_)
+    {
+      inverse_diagonal = M.diagonal().cwiseInverse();
+      if (G.rows() > 0)
+        {
+          const double g2 = G.squaredNorm();
+          penalty = (g2 > 0.0) ? options.augmentation * M.trace() / g2 : 0.0;
+          M_augmented = M;
+          M_augmented.noalias() += penalty * G.transpose() * G;
+          inverse_diagonal_augmented = M_augmented.diagonal().cwiseInverse();
+        }
+      w.resize(M.rows());
+      rhs.resize(M.rows());
+    }
+
+
+
+    // @sect4{Projected Gauss-Seidel sweeps}
+    //
+    // The gradient w = matrix N + rhs is kept current: a change delta of N_j
+    // adds delta times column j (contiguous in Eigen's column-major storage).
+    // It is recomputed from scratch once the change test passes, and the
+    // test is then repeated, so that accumulated round-off cannot fake
+    // convergence.
+    int
+    NormalLcp::pgs(const Eigen::MatrixXd &matrix,
+                   const Eigen::VectorXd &inv_diag,
+                   const Eigen::VectorXd &right_hand_side,
+                   Eigen::VectorXd       &N,
+                   const unsigned int     max_sweeps)
+    {
+      const Eigen::Index n     = N.size();
+      const double       omega = options.over_relaxation;
+      w.noalias()              = matrix * N;
+      w += right_hand_side;
+      bool fresh = true;
+      for (unsigned int sweep = 1; sweep <= max_sweeps; ++sweep)
+        {
+          double change = 0.0, size = 0.0;
+          for (Eigen::Index j = 0; j < n; ++j)
+            {
+              const double Nj = N[j];
+              const double Nnew =
+                std::min(0.0, Nj - omega * w[j] * inv_diag[j]);
+              const double delta = Nnew - Nj;
+              if (delta != 0.0)
+                {
+                  w += delta * matrix.col(j);
+                  N[j]   = Nnew;
+                  change = std::max(change, std::abs(delta));
+                }
+              size = std::max(size, std::abs(Nnew));
+            }
+          if (change <= options.tolerance * size)
+            {
+              if (fresh)
+                return static_cast<int>(sweep);
+              // Re-check with an exact gradient.
+              w.noalias() = matrix * N;
+              w += right_hand_side;
+              fresh = true;
+            }
+          else
+            fresh = false;
+        }
+      return -static_cast<int>(max_sweeps);
+    }
+
+
+
+    InnerResult
+    NormalLcp::solve_pgs(const Eigen::VectorXd &b,
+                         const Eigen::VectorXd &e,
+                         Eigen::VectorXd       &N,
+                         Eigen::VectorXd       &alpha)
+    {
+      InnerResult result;
+      if (G.rows() == 0)
+        {
+          const int s = pgs(M, inverse_diagonal, b, N, options.max_iterations);
+          result.converged  = s > 0;
+          result.iterations = static_cast<unsigned int>(std::abs(s));
+          if (!result.converged)
+            result.message = "normal PGS: sweep limit reached";
+          return result;
+        }
+
+      // Method of multipliers for the equality rows.
+      if (alpha.size() != G.rows())
+        alpha = Eigen::VectorXd::Zero(G.rows());
+      unsigned int total = 0;
+      while (total < options.max_iterations)
+        {
+          rhs = b;
+          rhs.noalias() += G.transpose() * (alpha - penalty * e);
+          const int s = pgs(M_augmented,
+                            inverse_diagonal_augmented,
+                            rhs,
+                            N,
+                            options.max_iterations - total);
+          total += static_cast<unsigned int>(std::abs(s));
+          const Eigen::VectorXd violation = G * N - e;
+          alpha += penalty * violation;
+          const double scale =
+            G.lpNorm<Eigen::Infinity>() * N.lpNorm<Eigen::Infinity>() +
+            e.lpNorm<Eigen::Infinity>();
+          if (s > 0 &&
+              violation.lpNorm<Eigen::Infinity>() <= options.tolerance * scale)
+            {
+              result.converged  = true;
+              result.iterations = total;
+              return result;
+            }
+          if (s < 0)
+            break;
+        }
+      result.iterations = total;
+      result.message    = "normal PGS: sweep limit reached with equality rows";
+      return result;
+    }
+
+
+
+    // @sect4{Primal-dual active set}
+    InnerResult
+    NormalLcp::solve_active_set(const Eigen::VectorXd &b,
+                                const Eigen::VectorXd &e,
+                                Eigen::VectorXd       &N,
+                                Eigen::VectorXd       &alpha)
+    {
+      const Eigen::Index n = N.size();
+      const Eigen::Index m = G.rows();
+      InnerResult        result;
+      if (alpha.size() != m)
+        alpha = Eigen::VectorXd::Zero(m);
+
+      std::vector<char> in_contact(n), next(n);
+      auto              update_set = [&](std::vector<char> &set) {
+        w.noalias() = M * N;
+        w += b;
+        if (m > 0)
+          w.noalias() += G.transpose() * alpha;
+        for (Eigen::Index j = 0; j < n; ++j)
+          set[j] = (N[j] - w[j] * inverse_diagonal[j] < 0.0);
+      };
+      update_set(in_contact);
+
+      std::set<std::vector<char>> visited;
+      std::vector<Eigen::Index>   index;
+      Eigen::MatrixXd             Mcc, Gc, Y;
+      Eigen::VectorXd             bc, x;
+      Eigen::LLT<Eigen::MatrixXd> llt;
+      unsigned int                restarts = 0;
+
+      for (unsigned int step = 1; step <= options.max_iterations; ++step)
+        {
+          // Gather the contact set and solve the reduced equality-constrained
+          // problem M_CC N_C + G_C^T alpha = -b_C, G_C N_C = e.
+          index.clear();
+          for (Eigen::Index j = 0; j < n; ++j)
+            if (in_contact[j])
+              index.push_back(j);
+          const Eigen::Index k = static_cast<Eigen::Index>(index.size());
+          if (m > 0 && k == 0)
+            {
+              // Equality rows need contacts to carry them: start from all.
+              std::fill(in_contact.begin(), in_contact.end(), 1);
+              continue;
+            }
+          Mcc.resize(k, k);
+          bc.resize(k);
+          for (Eigen::Index a = 0; a < k; ++a)
+            {
+              bc[a] = b[index[a]];
+              for (Eigen::Index c = 0; c < k; ++c)
+                Mcc(a, c) = M(index[a], index[c]);
+            }
+          N.setZero();
+          if (k > 0)
+            {
+              llt.compute(Mcc);
+              if (llt.info() != Eigen::Success)
+                {
+                  result.message =
+                    "normal active set: M_CC not positive definite";
+                  result.iterations = step;
+                  return result;
+                }
+              if (m > 0)
+                {
+                  Gc.resize(m, k);
+                  for (Eigen::Index a = 0; a < k; ++a)
+                    Gc.col(a) = G.col(index[a]);
+                  Y = llt.solve(Gc.transpose()); // M_CC^{-1} G_C^T
+                  const Eigen::MatrixXd S  = Gc * Y;
+                  const Eigen::VectorXd z  = llt.solve(-bc);
+                  const Eigen::VectorXd rs = Gc * z - e;
+                  alpha =
+                    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(S)
+                      .solve(rs);
+                  x = z - Y * alpha;
+                }
+              else
+                x = llt.solve(-bc);
+              for (Eigen::Index a = 0; a < k; ++a)
+                N[index[a]] = x[a];
+            }
+          update_set(next);
+          const bool equalities_hold =
+            (m == 0) ||
+            ((G * N - e).lpNorm<Eigen::Infinity>() <=
+             1e-9 * (G.lpNorm<Eigen::Infinity>() * N.lpNorm<Eigen::Infinity>() +
+                     e.lpNorm<Eigen::Infinity>()));
+          if (next == in_contact && equalities_hold)
+            {
+              result.converged  = true;
+              result.iterations = step;
+              return result;
+            }
+          if (!visited.insert(in_contact).second || next == in_contact)
+            {
+              // Cycling: a few projected Gauss-Seidel sweeps (the exact
+              // solution is a fixed point of both methods) before the set is
+              // guessed again.
+              if (++restarts > 20)
+                {
+                  result.iterations = step;
+                  result.message    = "normal active set: cycling";
+                  return result;
+                }
+              Eigen::VectorXd a      = alpha;
+              InnerOptions    saved  = options;
+              options.max_iterations = 20 * restarts;
+              solve_pgs(b, e, N, a);
+              options = saved;
+              alpha   = a;
+              update_set(next);
+              visited.clear();
+            }
+          in_contact.swap(next);
+        }
+      result.iterations = options.max_iterations;
+      result.message    = "normal active set: step limit reached";
+      return result;
+    }
+  } // namespace contact
+} // namespace dpana
