@@ -62,7 +62,8 @@ namespace dpana
       std::vector<double> hint(n, 0.0);
       double              best       = std::numeric_limits<double>::max();
       unsigned int        since_best = 0;
-      const double        omega      = options.over_relaxation;
+      double              omega      = options.over_relaxation;
+      unsigned int        reductions = 0;
 
       for (unsigned int sweep = 1; sweep <= options.max_iterations; ++sweep)
         {
@@ -143,6 +144,10 @@ namespace dpana
             {
               result.converged = true;
               result.message   = "converged";
+              if (reductions > 0)
+                result.message +=
+                  " (relaxation reduced to omega = " + std::to_string(omega) +
+                  ")";
               return result;
             }
           if (figures.natural_map < 0.99 * best)
@@ -152,9 +157,20 @@ namespace dpana
             }
           else if (++since_best >= options.stall_iterations)
             {
+              // Stall or cycling: under-relax (omega halves, at most six
+              // times) before giving up.
+              if (options.adaptive_relaxation && reductions < 6)
+                {
+                  omega *= 0.5;
+                  ++reductions;
+                  since_best = 0;
+                  best       = figures.natural_map;
+                  continue;
+                }
               result.message = "NSGS stalled: no residual decrease in " +
                                std::to_string(options.stall_iterations) +
-                               " sweeps";
+                               " sweeps (omega = " + std::to_string(omega) +
+                               ")";
               return result;
             }
           if (!std::isfinite(figures.natural_map))

@@ -5,12 +5,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace dpana
 {
   namespace contact
   {
+    namespace
+    {
+      std::string
+      scientific(const double x)
+      {
+        char buffer[32];
+        std::snprintf(buffer, sizeof(buffer), "%.3e", x);
+        return buffer;
+      }
+    } // namespace
+
+
+
     SolverResult
     solve_splitting(const ContactProblem  &problem,
                     const SolverOptions   &options,
@@ -187,7 +201,7 @@ namespace dpana
             {
               result.message =
                 "splitting stagnated: fixed point reached with residual " +
-                std::to_string(figures.natural_map) +
+                scientific(figures.natural_map) +
                 " above tolerance (inner solver accuracy" +
                 (inner_message.empty() ? std::string(")") :
                                          "; " + inner_message + ")");

@@ -18,7 +18,12 @@
 //
 // Stops when the shared residual is <= tolerance (after a check with a
 // freshly computed u), when max_iterations sweeps are done, or on a stall
-// (no new residual minimum for stall_iterations sweeps).
+// (no new residual minimum, by a factor 0.99, for stall_iterations sweeps).
+// With adaptive_relaxation (the default) a stall first halves omega, up to
+// six times (omega >= omega_0 / 64), and the sweeps go on: exact local
+// solves can cycle for large mu (the local problems, whose solution is taken
+// in the order separated / stick / slip, may have several solutions), and
+// under-relaxation damps the cycle.
 #ifndef dpana_contact_nsgs_h
 #define dpana_contact_nsgs_h
 

@@ -63,6 +63,10 @@ namespace dpana
       // Equality rows handled by an augmented Lagrangian (PGS, NSGS): the
       // penalty is augmentation * trace(A) / ||G||_F^2.
       double augmentation = 1.0;
+      // NSGS only: on a stall, halve omega (at most six times) and go on
+      // instead of stopping. Under-relaxation cures the cycling of NSGS seen
+      // for large mu.
+      bool adaptive_relaxation = true;
     };
 
     struct SolverResult
