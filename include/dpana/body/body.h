@@ -1,0 +1,341 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_body_body_h
+#define dpana_body_body_h
+
+#include <dpana/body/boundary_conditions.h>
+#include <dpana/body/material.h>
+#include <dpana/geometry/geometry.h>
+#include <dpana/linear_algebra/sparse_cholesky.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  /**
+   * One linear elastic body: its simplex mesh, the P1 displacement space,
+   * the stiffness matrix K and load vector f with the kinematic conditions
+   * eliminated, the rigid motions those conditions leave free, and, once
+   * solved, the displacement and the stresses.
+   *
+   * <h3>Discretisation</h3>
+   *
+   * The displacement u is continuous and linear on every triangle or
+   * tetrahedron: FESystem(FE_SimplexP(1), dim), with the MappingFE of the
+   * same degree (the mapping every simplex computation must be given; the
+   * default MappingQ1 of deal.II is for quadrilaterals and hexahedra). The
+   * weak form of equilibrium, find u with the kinematic conditions such that
+   * for all admissible v
+   *
+   *   \int_Omega eps(v) : C : eps(u) dx
+   *     = \int_Omega v . b dx + \int_{Gamma_N} v . t ds + sum_k v(x_k) . F_k,
+   *
+   * gives K u = f. The strain of a P1 field is constant in each cell, so the
+   * stiffness needs a single quadrature point; the loads use QGaussSimplex
+   * rules that integrate quadratic integrands exactly.
+   *
+   * <h3>Kinematic conditions</h3>
+   *
+   * Every condition is a constraint on the nodal values at the vertices of
+   * the faces of a named boundary, collected in one AffineConstraints
+   * object: fixed components and prescribed displacements set a nodal value,
+   * a symmetry condition sets the normal component u . n = 0 (for a boundary
+   * normal to a coordinate axis simply that component, otherwise one
+   * component as a combination of the others). K and f are assembled with
+   * these constraints eliminated (u = M v + u_bar) and the SparseCholesky
+   * factors the reduced matrix of the free unknowns v.
+   *
+   * <h3>Rigid motions</h3>
+   *
+   * A body is held if the only rigid motion (the 3 in 2D, 6 in 3D
+   * infinitesimal translations and rotations) that satisfies the homogeneous
+   * constraints is zero. setup() computes which ones are left free (see
+   * free_rigid_modes()); K_r is singular exactly when there are any.
+   */
+  template <int dim>
+  class Body
+  {
+  public:
+    /**
+     * A rigid motion left free by the constraints: a combination, with the
+     * given coefficients, of the columns of rigid_mode_vectors().
+     */
+    struct RigidMode
+    {
+      std::string     description;
+      Eigen::VectorXd coefficients;
+    };
+
+    /**
+     * A concentrated force as applied: the requested point, the mesh vertex
+     * nearest to it that carries the force, and the force.
+     */
+    struct AppliedConcentratedForce
+    {
+      dealii::Point<dim>     requested_point;
+      dealii::Point<dim>     vertex;
+      dealii::Tensor<1, dim> force;
+    };
+
+    /**
+     * @p name is used in the log and in error messages, e.g. "Body 1".
+     */
+    explicit Body(const std::string &name = "Body 1");
+
+    /**
+     * Declares the subsections Geometry, Material, Boundary conditions and
+     * Loads. The caller has entered the body's subsection ("Body 1").
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Reads them (the caller has entered the body's subsection). Throws
+     * dpana::InputError on bad values.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Builds the mesh described by the Geometry subsection.
+     */
+    void
+    create_mesh();
+
+    /**
+     * The mesh, for programs that build it themselves; they must then call
+     * set_boundary_names().
+     */
+    dealii::Triangulation<dim> &
+    triangulation();
+    const dealii::Triangulation<dim> &
+    triangulation() const;
+
+    void
+    set_boundary_names(
+      const std::map<std::string, dealii::types::boundary_id> &names);
+    const std::map<std::string, dealii::types::boundary_id> &
+    boundary_names() const;
+
+    /**
+     * A one-line description of the geometry (for the log).
+     */
+    std::string
+    geometry_description() const;
+
+    Material &
+    material();
+    const Material &
+    material() const;
+    BoundaryConditions<dim> &
+    boundary_conditions();
+    Loads<dim> &
+    loads();
+    const std::string &
+    name() const;
+
+    /**
+     * Distributes the degrees of freedom, builds the constraints of the
+     * boundary conditions and the sparsity pattern, and finds the free rigid
+     * motions. Throws dpana::InputError for a boundary name that the mesh
+     * does not have or no face carries, or a symmetry boundary that is not
+     * flat.
+     */
+    void
+    setup();
+
+    /**
+     * Throws dpana::InputError "Body 1: not held: rigid motions x, y are
+     * free; ..." if free_rigid_modes() is not empty.
+     */
+    void
+    check_held() const;
+
+    /**
+     * Assembles K and f with the constraints eliminated.
+     */
+    void
+    assemble();
+
+    /**
+     * Factors K_r (sparse Cholesky) and solves for the displacement.
+     */
+    void
+    solve();
+
+    /**
+     * The stress in each cell (constant for P1), von Mises stress, and the
+     * reaction forces of the supported boundaries.
+     */
+    void
+    postprocess();
+
+    // --- Results and internal objects -------------------------------------
+
+    const dealii::DoFHandler<dim> &
+    dof_handler() const;
+    const dealii::Mapping<dim> &
+    mapping() const;
+    const dealii::FiniteElement<dim> &
+    fe() const;
+    const dealii::AffineConstraints<double> &
+    constraints() const;
+    const dealii::SparseMatrix<double> &
+    system_matrix() const;
+    const dealii::Vector<double> &
+    system_rhs() const;
+    const dealii::Vector<double> &
+    solution() const;
+    const linear_algebra::SparseCholesky &
+    factorization() const;
+
+    /**
+     * The degrees of freedom of every vertex of the mesh: dofs[v][c] is the
+     * c-th displacement component at vertex v (invalid for unused vertices).
+     */
+    const std::vector<std::array<dealii::types::global_dof_index, dim>> &
+    vertex_dofs() const;
+
+    /**
+     * The vertices of the faces of a boundary id.
+     */
+    std::vector<unsigned int>
+    boundary_vertices(const dealii::types::boundary_id id) const;
+
+    /**
+     * The nodal vectors of the rigid motions, one per column: translations
+     * x, y (, z), then the rotation(s) about the centroid of the vertices,
+     * scaled so that the largest nodal displacement of a rotation is 1.
+     */
+    const Eigen::MatrixXd &
+    rigid_mode_vectors() const;
+    const std::vector<std::string> &
+    rigid_mode_names() const;
+
+    /**
+     * An orthonormal basis (in the coefficients of rigid_mode_vectors()) of
+     * the rigid motions that satisfy the homogeneous constraints, each with
+     * a description ("x", "rotation", "rotation about (1, 2)"...).
+     */
+    const std::vector<RigidMode> &
+    free_rigid_modes() const;
+
+    const std::vector<AppliedConcentratedForce> &
+    applied_concentrated_forces() const;
+
+    /**
+     * Stress tensor of each active cell (index = active cell index).
+     */
+    const std::vector<dealii::SymmetricTensor<2, dim>> &
+    cell_stress() const;
+
+    /**
+     * sigma_zz of each cell in 2D (zero in plane stress), empty in 3D.
+     */
+    const std::vector<double> &
+    cell_out_of_plane_stress() const;
+
+    /**
+     * Von Mises stress of each cell, sqrt(3 J2) of the full 3D stress.
+     */
+    const std::vector<double> &
+    cell_von_mises() const;
+
+    /**
+     * For every named boundary that carries a kinematic condition, the
+     * resultant of the reaction forces at its vertices (N, or N/mm in 2D).
+     * A vertex shared by two such boundaries counts for both.
+     */
+    const std::map<std::string, dealii::Tensor<1, dim>> &
+    reactions() const;
+
+    /**
+     * The resultant of all applied loads (body force, tractions, pressures,
+     * concentrated forces).
+     */
+    dealii::Tensor<1, dim>
+    applied_load_resultant() const;
+
+    /**
+     * Largest nodal displacement magnitude (mm).
+     */
+    double
+    max_displacement() const;
+
+  private:
+    std::string name_;
+
+    std::unique_ptr<geometry::Geometry<dim>>          geometry;
+    dealii::Triangulation<dim>                        tria;
+    std::map<std::string, dealii::types::boundary_id> names;
+
+    Material                material_;
+    BoundaryConditions<dim> bcs;
+    Loads<dim>              loads_;
+
+    dealii::FESystem<dim>   fe_;
+    dealii::MappingFE<dim>  mapping_;
+    dealii::DoFHandler<dim> dof_handler_;
+    std::vector<std::array<dealii::types::global_dof_index, dim>>
+                                      dofs_of_vertex;
+    dealii::AffineConstraints<double> constraints_;
+    dealii::SparsityPattern           sparsity_pattern;
+    dealii::SparseMatrix<double>      matrix;
+    dealii::Vector<double>            rhs;
+    dealii::Vector<double>            u;
+    linear_algebra::SparseCholesky    cholesky;
+
+    Eigen::MatrixXd                       rigid_modes;
+    std::vector<std::string>              rigid_names;
+    std::vector<RigidMode>                free_modes;
+    std::vector<AppliedConcentratedForce> concentrated;
+
+    std::vector<dealii::SymmetricTensor<2, dim>>  stress;
+    std::vector<double>                           stress_zz;
+    std::vector<double>                           von_mises;
+    std::map<std::string, dealii::Tensor<1, dim>> reaction;
+    dealii::Tensor<1, dim>                        applied_resultant;
+
+    dealii::types::boundary_id
+    resolve(const std::string &boundary, const std::string &parameter) const;
+    void
+    make_constraints();
+    void
+    find_free_rigid_modes();
+    void
+    locate_concentrated_forces();
+    void
+    assemble_cell(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      dealii::FEValues<dim>                                        &fe_values,
+      dealii::FEFaceValues<dim>  &fe_face_values,
+      dealii::FullMatrix<double> &cell_matrix,
+      dealii::Vector<double>     &cell_rhs) const;
+  };
+} // namespace dpana
+
+#endif
