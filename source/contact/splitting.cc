@@ -133,6 +133,22 @@ namespace dpana
       };
       assemble();
 
+      // Without a start value, begin with an N-step at T = 0: the
+      // frictionless solution, which is what the first T-step (with all
+      // friction radii zero) followed by an N-step would give anyway; doing
+      // it first also keeps purely tangential equality rows (infeasible with
+      // zero radii) out of the first T-step.
+      if (!initial_r)
+        {
+          b = D_N;
+          if (mN > 0)
+            e_shifted = e_N;
+          const InnerResult r0 =
+            use_pgs ? normal.solve_pgs(b, e_shifted, N, alpha_N) :
+                      normal.solve_active_set(b, e_shifted, N, alpha_N);
+          result.inner_iterations += r0.iterations;
+        }
+
       double       best       = std::numeric_limits<double>::max();
       unsigned int since_best = 0;
       std::string  inner_message;
@@ -141,6 +157,7 @@ namespace dpana
         {
           result.iterations = k;
           r_old             = result.r;
+          inner_message.clear();
 
           // T-step at fixed N.
           for (unsigned int j = 0; j < n; ++j)
@@ -154,7 +171,12 @@ namespace dpana
                       friction.solve_active_set(c, radius, e_T, T, alpha_T);
           result.inner_iterations += rt.iterations;
           if (!rt.converged)
-            inner_message = rt.message;
+            {
+              inner_message = rt.message;
+              // Do not carry multipliers of a failed solve into the next.
+              if (!alpha_T.allFinite() || mT > 0)
+                alpha_T.setZero();
+            }
 
           // N-step at fixed T.
           b = D_N;
@@ -169,7 +191,11 @@ namespace dpana
                       normal.solve_active_set(b, e_shifted, N, alpha_N);
           result.inner_iterations += rn.iterations;
           if (!rn.converged)
-            inner_message = rn.message;
+            {
+              inner_message = rn.message;
+              if (!alpha_N.allFinite())
+                alpha_N.setZero();
+            }
 
           // Shared residual of the full problem.
           assemble();
@@ -186,7 +212,12 @@ namespace dpana
               (result.r - r_old).lpNorm<Eigen::Infinity>() / r_norm :
               0.0;
 
-          if (figures.natural_map <= options.tolerance)
+          const double eq_scale =
+            (me > 0) ? problem.G.lpNorm<Eigen::Infinity>() * r_norm +
+                         problem.e.lpNorm<Eigen::Infinity>() :
+                       0.0;
+          if (figures.natural_map <= options.tolerance &&
+              figures.equilibrium <= options.tolerance * eq_scale)
             {
               result.converged = true;
               result.message   = "converged";

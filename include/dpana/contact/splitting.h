@@ -8,10 +8,12 @@
 // with projected Gauss-Seidel (splitting_pgs) or active-set (splitting_
 // active_set) inner solvers, warm started from the previous iterate.
 //
-// Start: N_0 = normal part of initial_r, or 0. From N_0 = 0 the first T-step
-// gives T_1 = 0 (the friction sets are points) and the first N-step gives the
-// frictionless solution: starting from zero IS starting from the frictionless
-// solution.
+// Start: (N_0, T_0) from initial_r; otherwise the frictionless solution, an
+// N-step at T = 0 made before the loop. (From N_0 = 0 the first T-step
+// would give T = 0, the friction sets being points, so starting from zero is
+// starting from the frictionless solution; doing the N-step first also keeps
+// purely tangential equality rows, infeasible with zero friction radii, out
+// of a degenerate first T-step.)
 //
 // Equality rows G r = e (floating bodies): a row with any normal entry is a
 // "normal row" and is imposed in the N-step, G_N N = e - G_T T_k, with its
@@ -22,7 +24,9 @@
 // full problem; and since the N-step comes last, G r = e holds to the
 // accuracy of the N-step (round-off for the active-set solver).
 //
-// Stopping: converged when the shared residual (residual.h) is <= tolerance.
+// Stopping: converged when the shared residual (residual.h) is <= tolerance
+// and, with equality rows, ||G r - e||_inf <= tolerance (||G||_inf ||r||_inf
+// + ||e||_inf).
 // The relative change ||r_k - r_{k-1}||_inf / ||r_k||_inf is recorded; if it
 // drops below 1e-15 while the residual is still above tolerance the loop
 // stops as "stagnated" (the inner tolerance limits the attainable residual).
