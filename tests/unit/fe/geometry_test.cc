@@ -1,0 +1,698 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+//
+// Tests of the geometry component: cell counts, boundary names, areas,
+// volumes and boundary lengths of every geometry type, and the errors for bad
+// input.
+//
+// Measures are sums of cell (face) measures computed with a simplex
+// quadrature and MappingFE of degree one, the mapping the solver uses
+// (GridTools::volume assumes MappingQ1, which is wrong for simplices). The
+// cells are affine, so these sums are exact up to rounding; the tolerance
+// 1e-12 (relative) only absorbs rounding. The reference values are exact
+// formulas: side lengths and areas of the bricks, and for the curved shapes
+// the inscribed polygon whose vertices are spread evenly on the circle by
+// the refinement (n chords over an angle alpha: length 2 n R sin(alpha/2n),
+// area of the sector part n R^2 sin(alpha/n) / 2), which tends to the
+// circle's values at the rate (alpha/n)^2.
+
+#include <dpana/base/exceptions.h>
+#include <dpana/geometry/geometry.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using dealii::types::boundary_id;
+  using dpana::geometry::Geometry;
+
+  const double pi = dealii::numbers::PI;
+
+  // The folder of the test meshes, found from the path of this file.
+  std::string
+  data_dir()
+  {
+#ifdef DPANA_SOURCE_DIR
+    return std::string(DPANA_SOURCE_DIR) + "/tests/data/";
+#else
+    const std::string here = __FILE__;
+    return here.substr(0, here.rfind("/unit/fe/")) + "/data/";
+#endif
+  }
+
+  // A geometry read from the text of a "Geometry" subsection.
+  template <int dim>
+  Geometry<dim>
+  make_geometry(const std::string &text)
+  {
+    dealii::ParameterHandler prm;
+    Geometry<dim>::declare_parameters(prm);
+    prm.parse_input_from_string(text);
+    Geometry<dim> geometry;
+    geometry.parse_parameters(prm);
+    return geometry;
+  }
+
+  // Volume (area) of the mesh, measure and number of the boundary faces per
+  // id, and the checks every mesh must pass: positive Jacobians, every
+  // boundary face named.
+  struct Measures
+  {
+    unsigned int                    n_cells = 0;
+    double                          volume  = 0;
+    std::map<boundary_id, double>   boundary_measure;
+    std::map<boundary_id, unsigned> n_boundary_faces;
+    double                          min_jxw = 1e300;
+  };
+
+  template <int dim>
+  Measures
+  measure(const dealii::Triangulation<dim> &tria)
+  {
+    const dealii::FE_SimplexP<dim>       fe(1);
+    const dealii::MappingFE<dim>         mapping(fe);
+    const dealii::QGaussSimplex<dim>     quadrature(2);
+    const dealii::QGaussSimplex<dim - 1> face_quadrature(2);
+    dealii::FEValues<dim>                fe_values(mapping,
+                                    fe,
+                                    quadrature,
+                                    dealii::update_JxW_values |
+                                      dealii::update_jacobians);
+    dealii::FEFaceValues<dim>            fe_face_values(mapping,
+                                             fe,
+                                             face_quadrature,
+                                             dealii::update_JxW_values);
+    Measures                             m;
+    m.n_cells = tria.n_active_cells();
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            m.volume += fe_values.JxW(q);
+            m.min_jxw =
+              std::min(m.min_jxw, fe_values.jacobian(q).determinant());
+          }
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              fe_face_values.reinit(cell, f);
+              const boundary_id id = cell->face(f)->boundary_id();
+              ++m.n_boundary_faces[id];
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                m.boundary_measure[id] += fe_face_values.JxW(q);
+            }
+      }
+    return m;
+  }
+
+  template <int dim>
+  std::set<std::string>
+  names_of(const Geometry<dim> &geometry)
+  {
+    std::set<std::string> s;
+    for (const auto &n : geometry.boundary_names())
+      s.insert(n.first);
+    return s;
+  }
+
+  // Every vertex of the faces with the given id lies on the circle
+  // |(x, y) - c| = r: returns the largest deviation.
+  template <int dim>
+  double
+  distance_from_circle(const dealii::Triangulation<dim> &tria,
+                       const boundary_id                 id,
+                       const dealii::Point<2>            c,
+                       const double                      r)
+  {
+    double d = 0;
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == id)
+        for (const unsigned int v : face->vertex_indices())
+          d = std::max(d,
+                       std::abs(std::hypot(face->vertex(v)[0] - c[0],
+                                           face->vertex(v)[1] - c[1]) -
+                                r));
+    return d;
+  }
+
+  void
+  expect_relative(const double value, const double reference)
+  {
+    EXPECT_NEAR(value, reference, 1e-12 * std::abs(reference));
+  }
+} // namespace
+
+
+
+// @sect3{Rectangle and box}
+
+TEST(Geometry, RectangleCountsNamesMeasures)
+{
+  const auto geometry = make_geometry<2>("set Type = rectangle\n"
+                                         "set Lower corner = -10, 5\n"
+                                         "set Upper corner = 30, 45\n"
+                                         "set Subdivisions = 4, 2\n"
+                                         "set Global refinements = 1\n");
+  EXPECT_EQ(names_of(geometry),
+            (std::set<std::string>{"left", "right", "bottom", "top"}));
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  // 4 x 2 rectangles, 2 triangles each, 4 children per refinement.
+  EXPECT_EQ(m.n_cells, 4u * 2 * 2 * 4);
+  EXPECT_GT(m.min_jxw, 0.);
+  expect_relative(m.volume, 40. * 40.);
+  for (const std::string side : {"left", "right", "bottom", "top"})
+    expect_relative(m.boundary_measure.at(geometry.boundary_id(side)), 40.);
+  // Each side has its subdivisions times 2 faces.
+  EXPECT_EQ(m.n_boundary_faces.at(geometry.boundary_id("left")), 4u);
+  EXPECT_EQ(m.n_boundary_faces.at(geometry.boundary_id("bottom")), 8u);
+  EXPECT_EQ(geometry.description(),
+            "rectangle 40 x 40, 4 x 2 subdivisions, 1 global refinements");
+}
+
+
+
+TEST(Geometry, RectangleGradingMovesVerticesAsDocumented)
+{
+  // Exponent 2 towards y = 0 with 4 layers: the vertex rows move from
+  // y = 40 k/4 to y = 40 (k/4)^2 = 0, 2.5, 10, 22.5, 40. Along x, centre 20
+  // and exponent 3 with 2 layers on each side: x = 0, 20 - 20/8, 20,
+  // 20 + 20/8, 40.
+  const auto               geometry = make_geometry<2>("set Type = rectangle\n"
+                                                       "set Upper corner = 40, 40\n"
+                                                       "set Subdivisions = 4, 4\n"
+                                                       "set Grading centre = 20, 0\n"
+                                                       "set Grading exponents = 3, 2\n");
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  std::set<long> xs, ys;
+  for (const auto &v : tria.get_vertices())
+    {
+      xs.insert(std::lround(v[0] * 1e6));
+      ys.insert(std::lround(v[1] * 1e6));
+    }
+  EXPECT_EQ(ys, (std::set<long>{0, 2500000, 10000000, 22500000, 40000000}));
+  EXPECT_EQ(xs, (std::set<long>{0, 17500000, 20000000, 22500000, 40000000}));
+  const Measures m = measure(tria);
+  EXPECT_GT(m.min_jxw, 0.);
+  expect_relative(m.volume, 1600.);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("bottom")), 40.);
+}
+
+
+
+TEST(Geometry, BoxCountsNamesMeasures)
+{
+  const auto geometry = make_geometry<3>("set Type = box\n"
+                                         "set Lower corner = 0, 0, 0\n"
+                                         "set Upper corner = 2, 1, 3\n"
+                                         "set Subdivisions = 2, 1, 3\n"
+                                         "set Global refinements = 1\n");
+  EXPECT_EQ(
+    names_of(geometry),
+    (std::set<std::string>{"left", "right", "bottom", "top", "front", "back"}));
+  dealii::Triangulation<3> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  // 6 bricks, 5 tetrahedra each, 8 children per refinement.
+  EXPECT_EQ(m.n_cells, 6u * 5 * 8);
+  EXPECT_GT(m.min_jxw, 0.);
+  expect_relative(m.volume, 6.);
+  // left/right: x = const (1 x 3); bottom/top: y = const (2 x 3);
+  // front/back: z = const (2 x 1).
+  const std::map<std::string, double> area = {{"left", 3.},
+                                              {"right", 3.},
+                                              {"bottom", 6.},
+                                              {"top", 6.},
+                                              {"front", 2.},
+                                              {"back", 2.}};
+  for (const auto &a : area)
+    expect_relative(m.boundary_measure.at(geometry.boundary_id(a.first)),
+                    a.second);
+  EXPECT_EQ(m.boundary_measure.size(), 6u);
+}
+
+
+
+// @sect3{Half disc and quarter disc}
+
+TEST(Geometry, HalfDiscConvergesToTheCircle)
+{
+  // R = 40 centred at (0, 40): the lowest point is the origin.
+  const double R          = 40.;
+  double       last_error = 0;
+  for (unsigned int k = 0; k <= 4; ++k)
+    {
+      const auto geometry = make_geometry<2>(
+        "set Type = half disc\nset Radius = 40\nset Centre = 0, 40\n"
+        "set Global refinements = " +
+        std::to_string(k) + "\n");
+      EXPECT_EQ(names_of(geometry), (std::set<std::string>{"top", "curved"}));
+      dealii::Triangulation<2> tria;
+      geometry.create_triangulation(tria);
+      const Measures m = measure(tria);
+
+      // 6 quadrilaterals, 4 triangles each, 4 children per refinement; the
+      // curved side has 4 chords of 45 degrees before refinement.
+      const unsigned int n = 4 << k;
+      EXPECT_EQ(m.n_cells, 24u << (2 * k));
+      EXPECT_GT(m.min_jxw, 0.);
+      const boundary_id curved = geometry.boundary_id("curved");
+      const boundary_id top    = geometry.boundary_id("top");
+      EXPECT_EQ(m.n_boundary_faces.at(curved), n);
+      EXPECT_EQ(m.boundary_measure.size(), 2u);
+      expect_relative(m.boundary_measure.at(top), 2 * R);
+      expect_relative(m.boundary_measure.at(curved),
+                      2 * n * R * std::sin(pi / (2 * n)));
+      expect_relative(m.volume, n * R * R * std::sin(pi / n) / 2);
+      EXPECT_LT(distance_from_circle(tria, curved, {0, 40}, R), 1e-12 * R);
+
+      // The polygon approaches the half disc at the rate (pi/n)^2 / 6.
+      const double error = pi * R * R / 2 - m.volume;
+      EXPECT_GT(error, 0.);
+      EXPECT_LT(error, pi * R * R / 2 * std::pow(pi / n, 2) / 6);
+      if (k > 0)
+        {
+          EXPECT_GT(last_error / error, 3.8);
+          EXPECT_LT(last_error / error, 4.1);
+        }
+      last_error = error;
+
+      // The contact point (0, 0) is a vertex.
+      bool found = false;
+      for (const auto &v : tria.get_vertices())
+        found = found || v.norm() < 1e-12 * R;
+      EXPECT_TRUE(found);
+    }
+}
+
+
+
+TEST(Geometry, HalfDiscContactRefinement)
+{
+  // Two global and three contact refinements within 5 mm of the lowest
+  // point (0, -40) of the circle of radius 40 centred at the origin.
+  const double R        = 40.;
+  const auto   geometry = make_geometry<2>(
+    "set Type = half disc\nset Radius = 40\nset Centre = 0, 0\n"
+      "set Global refinements = 2\nset Contact refinements = 3\n"
+      "set Contact refinement radius = 5\n");
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  EXPECT_GT(m.min_jxw, 0.);
+  const boundary_id curved = geometry.boundary_id("curved");
+  EXPECT_EQ(m.boundary_measure.size(), 2u);
+  // Hanging nodes of the quadrilateral mesh must not leave holes: a
+  // non-conforming triangle mesh would show interior faces as boundary
+  // faces off the circle, and a total length of the top above 2R.
+  EXPECT_LT(distance_from_circle(tria, curved, {0, 0}, R), 1e-12 * R);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("top")), 2 * R);
+
+  // The area is that of the polygon of the curved boundary vertices: the
+  // sum of the triangles (centre, chord), R^2 sin(angle) / 2 each.
+  double polygon_area = 0, polygon_length = 0, finest_chord_near = 1e300,
+         largest_chord_near = 0;
+  for (const auto &face : tria.active_face_iterators())
+    if (face->at_boundary() && face->boundary_id() == curved)
+      {
+        const double chord = face->vertex(0).distance(face->vertex(1));
+        const double angle = 2 * std::asin(chord / (2 * R));
+        polygon_area += R * R * std::sin(angle) / 2;
+        polygon_length += chord;
+        if (face->center().distance(dealii::Point<2>(0, -R)) < 5.)
+          {
+            finest_chord_near  = std::min(finest_chord_near, chord);
+            largest_chord_near = std::max(largest_chord_near, chord);
+          }
+      }
+  expect_relative(m.volume, polygon_area);
+  expect_relative(m.boundary_measure.at(curved), polygon_length);
+  // Near the contact point the chords span 45 / 2^(2+3) degrees.
+  const double fine_chord = 2 * R * std::sin(pi / 4 / 32 / 2);
+  EXPECT_NEAR(finest_chord_near, fine_chord, 1e-9 * R);
+  EXPECT_NEAR(largest_chord_near, fine_chord, 1e-9 * R);
+  // More cells than the uniform mesh with two refinements (384), far fewer
+  // than the uniform one with five (24576).
+  EXPECT_GT(m.n_cells, 384u);
+  EXPECT_LT(m.n_cells, 24576u / 4);
+}
+
+
+
+TEST(Geometry, QuarterDisc)
+{
+  const double R        = 2.;
+  const auto   geometry = make_geometry<2>(
+    "set Type = quarter disc\nset Radius = 2\nset Centre = 1, 1\n"
+      "set Global refinements = 3\n");
+  EXPECT_EQ(names_of(geometry),
+            (std::set<std::string>{"top", "curved", "axis"}));
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  // 3 quadrilaterals -> 12 triangles, times 4^3; 2 chords of 45 degrees
+  // before refinement.
+  const unsigned int n = 2 << 3;
+  EXPECT_EQ(m.n_cells, 12u * 64);
+  EXPECT_GT(m.min_jxw, 0.);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("top")), R);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("axis")), R);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("curved")),
+                  2 * n * R * std::sin(pi / (4 * n)));
+  expect_relative(m.volume, n * R * R * std::sin(pi / (2 * n)) / 2);
+  EXPECT_LT(
+    distance_from_circle(tria, geometry.boundary_id("curved"), {1, 1}, R),
+    1e-12 * R);
+}
+
+
+
+// @sect3{Half cylinder}
+
+TEST(Geometry, HalfCylinder)
+{
+  const double R = 40., L = 20.;
+  const auto   geometry = make_geometry<3>(
+    "set Type = half cylinder\nset Radius = 40\n"
+      "set Centre = 0, 40, -5\nset Length = 20\n"
+      "set Axial subdivisions = 2\nset Global refinements = 1\n");
+  EXPECT_EQ(names_of(geometry),
+            (std::set<std::string>{"top", "curved", "front", "back"}));
+  dealii::Triangulation<3> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  // The cross-section has 24 * 4 = 96 triangles and 2 * 2 = 4 layers; each
+  // prism is split into 3 tetrahedra.
+  EXPECT_EQ(m.n_cells, 96u * 4 * 3);
+  EXPECT_GT(m.min_jxw, 0.);
+  const unsigned int n       = 8;
+  const double       section = n * R * R * std::sin(pi / n) / 2;
+  expect_relative(m.volume, section * L);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("front")),
+                  section);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("back")), section);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("top")),
+                  2 * R * L);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("curved")),
+                  2 * n * R * std::sin(pi / (2 * n)) * L);
+  EXPECT_EQ(m.boundary_measure.size(), 4u);
+  EXPECT_LT(
+    distance_from_circle(tria, geometry.boundary_id("curved"), {0, 40}, R),
+    1e-12 * R);
+}
+
+
+
+TEST(Geometry, HalfCylinderContactRefinementIsConforming)
+{
+  // Hanging nodes in the cross-section: the extruded mesh must still close,
+  // i.e. its volume is the cross-section area times the length and the
+  // front face has the cross-section's area.
+  const auto geometry = make_geometry<3>(
+    "set Type = half cylinder\nset Radius = 1\nset Centre = 0, 0, 0\n"
+    "set Length = 1\nset Contact refinements = 2\n"
+    "set Contact refinement radius = 0.3\n");
+  dealii::Triangulation<3> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  EXPECT_GT(m.min_jxw, 0.);
+  const double front = m.boundary_measure.at(geometry.boundary_id("front"));
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("back")), front);
+  expect_relative(m.volume, front * 1.);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("top")), 2.);
+  EXPECT_LT(
+    distance_from_circle(tria, geometry.boundary_id("curved"), {0, 0}, 1.),
+    1e-12);
+  EXPECT_EQ(m.boundary_measure.size(), 4u);
+}
+
+
+
+// @sect3{Annuli}
+
+TEST(Geometry, HalfAnnulus)
+{
+  // The cavity of the cylinder-in-a-cavity scene: Ri = 120, Ro = 240.
+  const double Ri = 120., Ro = 240.;
+  const auto   geometry =
+    make_geometry<2>("set Type = half annulus\nset Inner radius = 120\n"
+                     "set Outer radius = 240\nset Centre = 0, 120\n"
+                     "set Global refinements = 2\n");
+  EXPECT_EQ(names_of(geometry),
+            (std::set<std::string>{"inner", "outer", "left", "right"}));
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  EXPECT_GT(m.min_jxw, 0.);
+  // Ro/Ri = 2: the polar grid has ceil(pi / ln 2) = 5 cells along the half
+  // circle and round(ln 2 / (pi/5)) = 1 layer: 5 quadrilaterals, 20
+  // triangles, times 4^2.
+  EXPECT_EQ(m.n_cells, 20u * 16);
+  const unsigned int n = 5 * 4;
+  EXPECT_EQ(m.n_boundary_faces.at(geometry.boundary_id("inner")), n);
+  EXPECT_EQ(m.n_boundary_faces.at(geometry.boundary_id("outer")), n);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("left")), Ro - Ri);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("right")),
+                  Ro - Ri);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("inner")),
+                  2 * n * Ri * std::sin(pi / (2 * n)));
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("outer")),
+                  2 * n * Ro * std::sin(pi / (2 * n)));
+  expect_relative(m.volume, n * (Ro * Ro - Ri * Ri) * std::sin(pi / n) / 2);
+  EXPECT_LT(
+    distance_from_circle(tria, geometry.boundary_id("inner"), {0, 120}, Ri),
+    1e-12 * Ro);
+  EXPECT_LT(
+    distance_from_circle(tria, geometry.boundary_id("outer"), {0, 120}, Ro),
+    1e-12 * Ro);
+}
+
+
+
+TEST(Geometry, HalfAnnulusContactRefinement)
+{
+  // Refinement around the lowest point (0, -Ri) of the inner circle.
+  const double Ri = 40., Ro = 120.;
+  const auto   geometry = make_geometry<2>(
+    "set Type = half annulus\nset Inner radius = 40\n"
+      "set Outer radius = 120\nset Global refinements = 1\n"
+      "set Contact refinements = 2\nset Contact refinement radius = 10\n");
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  EXPECT_GT(m.min_jxw, 0.);
+  // The area is the difference of the polygons of the outer and inner
+  // boundary vertices.
+  double area = 0, shortest_inner = 1e300, longest_outer = 0;
+  for (const auto &face : tria.active_face_iterators())
+    if (face->at_boundary())
+      {
+        const double chord = face->vertex(0).distance(face->vertex(1));
+        if (face->boundary_id() == geometry.boundary_id("inner"))
+          {
+            area -= Ri * Ri * std::sin(2 * std::asin(chord / (2 * Ri))) / 2;
+            shortest_inner = std::min(shortest_inner, chord);
+          }
+        else if (face->boundary_id() == geometry.boundary_id("outer"))
+          {
+            area += Ro * Ro * std::sin(2 * std::asin(chord / (2 * Ro))) / 2;
+            longest_outer = std::max(longest_outer, chord);
+          }
+      }
+  expect_relative(m.volume, area);
+  // Ro/Ri = 3: 4 cells along the half circle (at least 4), 1 layer; one
+  // global and two contact refinements: the inner chords near the contact
+  // point span 45/8 degrees, the outer ones 45/2.
+  EXPECT_NEAR(shortest_inner, 2 * Ri * std::sin(pi / 4 / 8 / 2), 1e-9 * Ri);
+  EXPECT_NEAR(longest_outer, 2 * Ro * std::sin(pi / 4 / 2 / 2), 1e-9 * Ro);
+}
+
+
+
+TEST(Geometry, QuarterAnnulusForLame)
+{
+  const double Ri = 1., Ro = 2.;
+  const auto   geometry =
+    make_geometry<2>("set Type = quarter annulus\nset Inner radius = 1\n"
+                     "set Outer radius = 2\nset Global refinements = 3\n");
+  EXPECT_EQ(names_of(geometry),
+            (std::set<std::string>{"inner", "outer", "x_axis", "y_axis"}));
+  dealii::Triangulation<2> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  EXPECT_GT(m.min_jxw, 0.);
+  // ceil((pi/2) / ln 2) = 3 cells along the quarter circle, 1 layer.
+  const unsigned int n = 3 * 8;
+  EXPECT_EQ(m.n_cells, 12u * 64);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("x_axis")), 1.);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("y_axis")), 1.);
+  expect_relative(m.boundary_measure.at(geometry.boundary_id("inner")),
+                  2 * n * Ri * std::sin(pi / (4 * n)));
+  expect_relative(m.volume,
+                  n * (Ro * Ro - Ri * Ri) * std::sin(pi / (2 * n)) / 2);
+  // The exact quarter annulus has area 3 pi / 4.
+  EXPECT_NEAR(m.volume, 3 * pi / 4, 3 * pi / 4 * std::pow(pi / (2 * n), 2) / 6);
+}
+
+
+
+// @sect3{Gmsh files}
+
+TEST(Geometry, GmshFormat22And41)
+{
+  for (const std::string file :
+       {"rectangle_2x1_v22.msh", "rectangle_2x1_v41.msh"})
+    {
+      SCOPED_TRACE(file);
+      const auto geometry = make_geometry<2>(
+        "set Type = gmsh\nset Mesh file = " + data_dir() + file + "\n");
+      // Names and tags as written in the file's $PhysicalNames; the surface
+      // group "body" is not a boundary.
+      EXPECT_EQ(geometry.boundary_names(),
+                (std::map<std::string, boundary_id>{
+                  {"bottom", 1}, {"right", 2}, {"top", 3}, {"left", 4}}));
+      dealii::Triangulation<2> tria;
+      geometry.create_triangulation(tria);
+      const Measures m = measure(tria);
+      EXPECT_EQ(m.n_cells, 4u);
+      EXPECT_GT(m.min_jxw, 0.);
+      expect_relative(m.volume, 2.);
+      expect_relative(m.boundary_measure.at(1), 2.);
+      expect_relative(m.boundary_measure.at(2), 1.);
+      expect_relative(m.boundary_measure.at(3), 2.);
+      expect_relative(m.boundary_measure.at(4), 1.);
+      EXPECT_EQ(m.n_boundary_faces.at(1), 2u);
+      EXPECT_EQ(m.n_boundary_faces.at(4), 1u);
+    }
+}
+
+
+
+TEST(Geometry, GmshRefined3D)
+{
+  const auto geometry =
+    make_geometry<3>("set Type = gmsh\nset Mesh file = " + data_dir() +
+                     "cube_v22.msh\nset Global refinements = 1\n");
+  EXPECT_EQ(
+    names_of(geometry),
+    (std::set<std::string>{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}));
+  dealii::Triangulation<3> tria;
+  geometry.create_triangulation(tria);
+  const Measures m = measure(tria);
+  // 6 tetrahedra, 8 children each; each face of the cube is 2 triangles,
+  // 4 children each.
+  EXPECT_EQ(m.n_cells, 48u);
+  EXPECT_GT(m.min_jxw, 0.);
+  expect_relative(m.volume, 1.);
+  for (const auto &n : geometry.boundary_names())
+    {
+      expect_relative(m.boundary_measure.at(n.second), 1.);
+      EXPECT_EQ(m.n_boundary_faces.at(n.second), 8u);
+    }
+}
+
+
+
+// @sect3{Errors}
+
+template <typename F>
+std::string
+input_error_of(const F &f)
+{
+  try
+    {
+      f();
+    }
+  catch (const dpana::InputError &e)
+    {
+      return e.what();
+    }
+  catch (const std::exception &e)
+    {
+      return std::string("wrong exception type: ") + e.what();
+    }
+  return "no exception";
+}
+
+TEST(Geometry, Errors)
+{
+  EXPECT_EQ(input_error_of([] {
+              make_geometry<2>(
+                "set Type = gmsh\nset Mesh file = /nonexistent/x.msh\n");
+            }),
+            "Geometry: mesh file '/nonexistent/x.msh' not found (parameter "
+            "Mesh file)");
+  EXPECT_EQ(input_error_of([] { make_geometry<2>("set Type = gmsh\n"); }),
+            "Geometry: mesh file '' not found (parameter Mesh file)");
+
+  const std::string no_names = data_dir() + "rectangle_2x1_no_names.msh";
+  EXPECT_EQ(input_error_of([&] {
+              make_geometry<2>("set Type = gmsh\nset Mesh file = " + no_names +
+                               "\n");
+            }),
+            "Geometry: mesh file '" + no_names +
+              "' names no boundary: give every boundary a physical group "
+              "with a name, of dimension 1 (parameter Mesh file)");
+
+  // A side of the rectangle in no physical group.
+  const std::string open_side = data_dir() + "rectangle_2x1_open_side.msh";
+  EXPECT_EQ(input_error_of([&] {
+              const auto g = make_geometry<2>(
+                "set Type = gmsh\nset Mesh file = " + open_side + "\n");
+              dealii::Triangulation<2> tria;
+              g.create_triangulation(tria);
+            }),
+            "Geometry: mesh file '" + open_side +
+              "' has boundary faces in no physical group (parameter Mesh "
+              "file)");
+
+  // A 2D file read as a 3D mesh.
+  EXPECT_NE(input_error_of([&] {
+              const auto g = make_geometry<3>(
+                "set Type = gmsh\nset Mesh file = " + data_dir() +
+                "rectangle_2x1_v22.msh\n");
+              dealii::Triangulation<3> tria;
+              g.create_triangulation(tria);
+            }).find("Geometry: mesh file"),
+            std::string::npos);
+
+  const auto rectangle = make_geometry<2>("set Type = rectangle\n");
+  EXPECT_EQ(input_error_of([&] { rectangle.boundary_id("front"); }),
+            "no boundary named 'front' (this geometry has: bottom, left, "
+            "right, top)");
+  EXPECT_EQ(input_error_of([] { make_geometry<2>("set Type = box\n"); }),
+            "Geometry: type 'box' needs Dimension = 3 (parameter Type)");
+  EXPECT_EQ(input_error_of([] { make_geometry<3>("set Type = half disc\n"); }),
+            "Geometry: type 'half disc' needs Dimension = 2 (parameter Type)");
+  EXPECT_EQ(input_error_of([] {
+              make_geometry<2>("set Type = half annulus\n"
+                               "set Inner radius = 2\nset Outer radius = 1\n");
+            }),
+            "Geometry: need 0 < Inner radius < Outer radius (parameters "
+            "Inner radius, Outer radius)");
+  EXPECT_EQ(input_error_of([] {
+              make_geometry<2>("set Type = rectangle\n"
+                               "set Lower corner = 0, 1\n"
+                               "set Upper corner = 1, 1\n");
+            }),
+            "Geometry: Upper corner must exceed Lower corner in every "
+            "coordinate (parameters Lower corner, Upper corner)");
+}
