@@ -499,8 +499,12 @@ namespace dpana
               {
                 // a_x e_x + a_y e_y + theta (x - c)^perp / L is a rotation
                 // about q = c + L (-a_y, a_x) / theta.
-                s << "rotation about (" << centre[0] - L * a(1) / a(2) << ", "
-                  << centre[1] + L * a(0) / a(2) << ")";
+                dealii::Point<2> q(centre[0] - L * a(1) / a(2),
+                                   centre[1] + L * a(0) / a(2));
+                for (unsigned int d = 0; d < 2; ++d)
+                  if (std::abs(q[d]) < 1e-10 * L)
+                    q[d] = 0.0;
+                s << "rotation about (" << q[0] << ", " << q[1] << ")";
               }
             else
               {
