@@ -326,6 +326,42 @@ namespace dpana
 
 
 
+    void
+    FrictionSet::projection_radius_derivative(const double  c,
+                                              const double *y,
+                                              const int     region,
+                                              double       *dc) const
+    {
+      (void)c;
+      const unsigned int m = dim - 1;
+      for (unsigned int a = 0; a < m; ++a)
+        dc[a] = 0.0;
+      if (region < 0)
+        return;
+      if (dim == 2)
+        {
+          dc[0] = (y[0] > 0.0) ? 1.0 : (y[0] < 0.0 ? -1.0 : 0.0);
+          return;
+        }
+      if (cone == ConeModel::disc)
+        {
+          const double t = std::hypot(y[0], y[1]);
+          if (t > 0.0)
+            {
+              dc[0] = y[0] / t;
+              dc[1] = y[1] / t;
+            }
+          return;
+        }
+      const int              s = static_cast<int>(sides);
+      const Eigen::Vector2d &v =
+        (region < s) ? facet_normals[region] : polygon_vertices[region - s];
+      dc[0] = v[0];
+      dc[1] = v[1];
+    }
+
+
+
     // @sect4{Exact local minimisation over c P}
     void
     FrictionSet::minimise(const double  c,

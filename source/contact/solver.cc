@@ -1,3 +1,4 @@
+#include <dpana/contact/alart_curnier.h>
 #include <dpana/contact/nsgs.h>
 #include <dpana/contact/solver.h>
 #include <dpana/contact/splitting.h>
@@ -86,10 +87,6 @@ namespace dpana
       if (initial_r && !initial_r->allFinite())
         throw std::invalid_argument(
           "contact solver: initial_r has a non-finite entry");
-      if (options.type == SolverType::alart_curnier)
-        throw std::invalid_argument(
-          "contact solver: alart_curnier is not implemented in dpana; use "
-          "splitting_pgs, splitting_active_set or nsgs");
 
       SolverResult result;
       if (problem.n_elements() == 0)
@@ -104,6 +101,9 @@ namespace dpana
         {
           case SolverType::nsgs:
             result = solve_nsgs(problem, options, initial_r);
+            break;
+          case SolverType::alart_curnier:
+            result = solve_alart_curnier(problem, options, initial_r);
             break;
           default:
             result = solve_splitting(problem, options, initial_r);

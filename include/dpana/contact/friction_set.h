@@ -86,6 +86,15 @@ namespace dpana
                             const int     region,
                             double       *J) const;
 
+      // Derivative (d-1 entries) of the projection onto c P at y with
+      // respect to the radius c: 0 inside, y/|y| on the circle, sign(y) at an
+      // interval end, n_i on facet i, v_i at vertex i.
+      void
+      projection_radius_derivative(const double  c,
+                                   const double *y,
+                                   const int     region,
+                                   double       *dc) const;
+
       // Exact minimiser of 1/2 T^T W T + g^T T over c P, W symmetric positive
       // definite ((d-1)x(d-1), row-major). Interval: clipping of the
       // unconstrained minimiser. Disc: if the unconstrained minimiser lies

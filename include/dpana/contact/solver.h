@@ -8,7 +8,9 @@
 //     (normal_lcp.h, friction_qp.h; the loop itself in splitting.h);
 //   - nsgs: monolithic nonsmooth Gauss-Seidel over the contact elements with
 //     exact local Signorini-Coulomb solves (local_coulomb.h, nsgs.h);
-//   - alart_curnier: not implemented; solve() throws std::invalid_argument.
+//   - alart_curnier: semismooth Newton on the Alart-Curnier equations with
+//     an Armijo line search (alart_curnier.h); locally fast, not globally
+//     convergent (reports a failed line search honestly).
 #ifndef dpana_contact_solver_h
 #define dpana_contact_solver_h
 
@@ -29,7 +31,7 @@ namespace dpana
       splitting_pgs,        // D-PANA splitting, projected Gauss-Seidel inner
       splitting_active_set, // D-PANA splitting, active-set inner solvers
       nsgs,                 // monolithic nonsmooth Gauss-Seidel
-      alart_curnier         // semismooth Newton (not implemented: throws)
+      alart_curnier         // semismooth Newton on Alart-Curnier equations
     };
 
     // "splitting_pgs", "splitting_active_set", "nsgs", "alart_curnier";

@@ -151,7 +151,8 @@ namespace dpana_test
   {
     static const std::vector<SolverType> s = {SolverType::splitting_pgs,
                                               SolverType::splitting_active_set,
-                                              SolverType::nsgs};
+                                              SolverType::nsgs,
+                                              SolverType::alart_curnier};
     return s;
   }
 } // namespace dpana_test

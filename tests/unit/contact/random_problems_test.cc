@@ -47,10 +47,13 @@ namespace
         EXPECT_EQ(res.converged, res.residual <= 1e-10) << to_string(type);
         results.push_back(res);
       }
-    // NSGS must always solve these problems.
+    // NSGS and Alart-Curnier must always solve these problems.
     const SolverResult &nsgs = results[2];
     ASSERT_TRUE(nsgs.converged) << name(c) << ": " << nsgs.message;
     EXPECT_LE(nsgs.residual, 1e-10);
+    ASSERT_TRUE(results[3].converged) << name(c) << ": " << results[3].message;
+    if (c.mu <= 1.0)
+      EXPECT_LE(relative_difference(nsgs.r, results[3].r), 1e-7) << name(c);
     for (unsigned int s = 0; s < 2; ++s)
       if (results[s].converged)
         {

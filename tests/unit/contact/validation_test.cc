@@ -119,8 +119,6 @@ TEST(Validation, Options)
   check([](SolverOptions &o) { o.max_iterations = 0; }, "max_iterations");
   check([](SolverOptions &o) { o.over_relaxation = 2.0; }, "over_relaxation");
   check([](SolverOptions &o) { o.augmentation = 0.0; }, "augmentation");
-  check([](SolverOptions &o) { o.type = SolverType::alart_curnier; },
-        "alart_curnier");
   expect_error([&]() { solver_type_from_string("newton"); }, "newton");
   EXPECT_EQ(solver_type_from_string("nsgs"), SolverType::nsgs);
   for (const SolverType t : all_solvers())
