@@ -586,6 +586,44 @@ TEST(Geometry, GmshFormat22And41)
 
 
 
+TEST(Geometry, GmshFilesWrittenByGmsh)
+{
+  // The plate [0, 4] x [0, 2] with a hole of radius 0.5 centred at (2, 1),
+  // meshed by gmsh itself (tests/data/make_plate_with_hole.cc) and saved in
+  // both formats: several node and element blocks, point entities, curves
+  // split in several entities.
+  unsigned int n_cells = 0;
+  for (const std::string file :
+       {"plate_with_hole_v41.msh", "plate_with_hole_v22.msh"})
+    {
+      SCOPED_TRACE(file);
+      const auto geometry = make_geometry<2>(
+        "set Type = gmsh\nset Mesh file = " + data_dir() + file + "\n");
+      EXPECT_EQ(geometry.boundary_names(),
+                (std::map<std::string, boundary_id>{{"outer", 1},
+                                                    {"hole", 2}}));
+      dealii::Triangulation<2> tria;
+      geometry.create_triangulation(tria);
+      const Measures m = measure(tria);
+      EXPECT_GT(m.min_jxw, 0.);
+      // The same mesh in both files.
+      if (n_cells == 0)
+        n_cells = m.n_cells;
+      EXPECT_EQ(m.n_cells, n_cells);
+      expect_relative(m.boundary_measure.at(1), 12.);
+      // The hole is a polygon with its n vertices on the circle (to the
+      // precision gmsh writes).
+      const unsigned int n = m.n_boundary_faces.at(2);
+      const double       r = 0.5;
+      EXPECT_LT(distance_from_circle(tria, 2, {2, 1}, r), 1e-6);
+      EXPECT_NEAR(m.boundary_measure.at(2), 2 * n * r * std::sin(pi / n), 1e-6);
+      EXPECT_NEAR(m.volume, 8. - n * r * r * std::sin(2 * pi / n) / 2, 1e-6);
+    }
+  EXPECT_GT(n_cells, 20u);
+}
+
+
+
 TEST(Geometry, GmshRefined3D)
 {
   const auto geometry =
