@@ -92,8 +92,9 @@ namespace dpana
       Eigen::VectorXd &r = result.r;
       Eigen::VectorXd &alpha = result.alpha;
 
-      Eigen::VectorXd F(q), Ftrial(q), dz(q), rtrial(size), atrial(me);
-      Eigen::MatrixXd J(q, q);
+      Eigen::VectorXd  F(q), Ftrial(q), dz(q), rtrial(size), atrial(me);
+      Eigen::MatrixXd  J(q, q), Jr;
+      std::vector<int> free_index, fixed_index;
       Eigen::PartialPivLU<Eigen::MatrixXd> lu;
       const double                         eq_norm_e =
         (me > 0) ? problem.e.lpNorm<Eigen::Infinity>() : 0.0;
@@ -178,15 +179,60 @@ namespace dpana
           if (me > 0)
             J.bottomLeftCorner(me, size) = G;
 
-          lu.compute(J);
-          dz = lu.solve(-F);
-          if (!dz.allFinite() || lu.rcond() < 1e-14)
+          // Elements that are not pressed (y_N >= 0) and have a zero
+          // projection derivative (radius 0) have unit rows: their step is
+          // -F outright. Eliminate them and factor only the rest.
+          free_index.clear();
+          fixed_index.clear();
+          dz.setZero();
+          for (unsigned int j = 0; j < n; ++j)
             {
-              // Singular generalised Jacobian (e.g. at r = 0 with equality
-              // rows: no element pressed, so alpha does not enter yet): take
-              // the minimum-norm least-squares step instead.
-              dz = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(J)
-                     .solve(-F);
+              bool fixed = map.yN[j] >= 0.0;
+              for (unsigned int a = 0; a < m && fixed; ++a)
+                for (unsigned int b = 0; b < d; ++b)
+                  fixed = fixed && J(d * j + 1 + a, d * j + b) ==
+                                     (a + 1 == b ? 1.0 : 0.0);
+              for (unsigned int a = 0; a < d; ++a)
+                {
+                  const int i = static_cast<int>(d * j + a);
+                  if (fixed)
+                    {
+                      fixed_index.push_back(i);
+                      dz[i] = -F[i];
+                    }
+                  else
+                    free_index.push_back(i);
+                }
+            }
+          for (Eigen::Index i = 0; i < me; ++i)
+            free_index.push_back(static_cast<int>(size + i));
+          if (!free_index.empty())
+            {
+              const Eigen::Index nf = free_index.size();
+              Eigen::VectorXd    rhs(nf);
+              for (Eigen::Index a = 0; a < nf; ++a)
+                rhs[a] = -F[free_index[a]];
+              if (!fixed_index.empty())
+                {
+                  Eigen::VectorXd dfixed(fixed_index.size());
+                  for (std::size_t a = 0; a < fixed_index.size(); ++a)
+                    dfixed[a] = dz[fixed_index[a]];
+                  rhs.noalias() -= J(free_index, fixed_index) * dfixed;
+                }
+              Jr = J(free_index, free_index);
+              lu.compute(Jr);
+              Eigen::VectorXd z = lu.solve(rhs);
+              if (!z.allFinite() || lu.rcond() < 1e-14)
+                {
+                  // Singular generalised Jacobian (e.g. at r = 0 with
+                  // equality rows: no element pressed, so alpha does not
+                  // enter yet): take the minimum-norm least-squares step.
+                  z =
+                    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Jr)
+                      .solve(rhs);
+                }
+              for (Eigen::Index a = 0; a < nf; ++a)
+                dz[free_index[a]] = z[a];
             }
           if (!dz.allFinite())
             {

@@ -239,8 +239,9 @@ namespace dpana
         }
 
       Eigen::VectorXd F(q + me), Ftrial(q + me), dx(q + me), Ttrial(q),
-        btrial(me);
-      J.resize(q + me, q + me);
+        btrial(me), v(q), rhs_reduced;
+      std::vector<unsigned int>            free_blocks;
+      std::vector<double>                  derivatives(m * m * n);
       Eigen::PartialPivLU<Eigen::MatrixXd> lu;
       const double e_norm   = (me > 0) ? e.lpNorm<Eigen::Infinity>() : 0.0;
       const double G_norm   = (me > 0) ? G.lpNorm<Eigen::Infinity>() : 0.0;
@@ -265,38 +266,95 @@ namespace dpana
           if (step == options.max_iterations)
             break;
 
-          // Generalised Jacobian:
-          //   rows of block j: I - D_j + rho_j D_j M_j,: | rho_j D_j G_j^T,
-          //   equality rows:   G | 0.
-          J.setZero();
+          // Generalised Jacobian, block row j:
+          //   (I - D_j) e_j + rho_j D_j M_j,:  |  rho_j D_j G_j^T,
+          // equality rows: G | 0. A block with D_j = 0 (friction radius
+          // zero, interval end, polygon vertex) has the row e_j: its step is
+          // dx_j = -F_j outright. Those blocks are eliminated, and only the
+          // remaining "free" blocks (stick, facet or circle slip) enter the
+          // dense LU, which makes the step much cheaper when many elements
+          // are separated or at a vertex.
+          free_blocks.clear();
+          dx.setZero();
           for (unsigned int j = 0; j < n; ++j)
             {
-              double D[4];
+              double *D = derivatives.data() + m * m * j;
               set.projection_derivative(radius[j],
                                         y.data() + m * j,
                                         region[j],
                                         D);
+              bool nonzero = false;
+              for (unsigned int a = 0; a < m * m; ++a)
+                nonzero = nonzero || D[a] != 0.0;
+              if (nonzero)
+                free_blocks.push_back(j);
+              else
+                dx.segment(m * j, m) = -F.segment(m * j, m);
+            }
+          const Eigen::Index nf = static_cast<Eigen::Index>(free_blocks.size());
+          const Eigen::Index f  = m * nf;
+          v.noalias()           = M * dx.head(q);
+          J.resize(f + me, f + me);
+          rhs_reduced.resize(f + me);
+          for (Eigen::Index bk = 0; bk < nf; ++bk)
+            {
+              const unsigned int k = free_blocks[bk];
+              for (unsigned int t = 0; t < m; ++t)
+                {
+                  const Eigen::Index col  = m * bk + t;
+                  const Eigen::Index gcol = m * k + t;
+                  for (Eigen::Index bj = 0; bj < nf; ++bj)
+                    {
+                      const unsigned int j = free_blocks[bj];
+                      const double      *D = derivatives.data() + m * m * j;
+                      for (unsigned int a = 0; a < m; ++a)
+                        {
+                          double value = 0.0;
+                          for (unsigned int b = 0; b < m; ++b)
+                            value += D[m * a + b] * M(m * j + b, gcol);
+                          value *= rho[j];
+                          if (j == k)
+                            value += (a == t ? 1.0 : 0.0) - D[m * a + t];
+                          J(m * bj + a, col) = value;
+                        }
+                    }
+                  for (Eigen::Index i = 0; i < me; ++i)
+                    J(f + i, col) = G(i, gcol);
+                }
+            }
+          for (Eigen::Index bj = 0; bj < nf; ++bj)
+            {
+              const unsigned int j = free_blocks[bj];
+              const double      *D = derivatives.data() + m * m * j;
               for (unsigned int a = 0; a < m; ++a)
                 {
-                  const Eigen::Index row = m * j + a;
-                  J(row, row) += 1.0;
+                  double value = 0.0;
                   for (unsigned int b = 0; b < m; ++b)
+                    value += D[m * a + b] * v[m * j + b];
+                  rhs_reduced[m * bj + a] = -F[m * j + a] - rho[j] * value;
+                  for (Eigen::Index i = 0; i < me; ++i)
                     {
-                      const double Dab = D[m * a + b];
-                      if (Dab == 0.0)
-                        continue;
-                      J(row, m * j + b) -= Dab;
-                      J.row(row).head(q) += (rho[j] * Dab) * M.row(m * j + b);
-                      if (me > 0)
-                        J.row(row).tail(me) +=
-                          (rho[j] * Dab) * G.col(m * j + b).transpose();
+                      double g = 0.0;
+                      for (unsigned int b = 0; b < m; ++b)
+                        g += D[m * a + b] * G(i, m * j + b);
+                      J(m * bj + a, f + i) = rho[j] * g;
                     }
                 }
             }
           if (me > 0)
-            J.bottomLeftCorner(me, q) = G;
-          lu.compute(J);
-          dx = lu.solve(-F);
+            {
+              J.bottomRightCorner(me, me).setZero();
+              rhs_reduced.tail(me) = -F.tail(me) - G * dx.head(q);
+            }
+          if (f + me > 0)
+            {
+              lu.compute(J);
+              const Eigen::VectorXd z = lu.solve(rhs_reduced);
+              for (Eigen::Index bj = 0; bj < nf; ++bj)
+                dx.segment(m * free_blocks[bj], m) = z.segment(m * bj, m);
+              if (me > 0)
+                dx.tail(me) = z.tail(me);
+            }
           if (!dx.allFinite())
             {
               result.iterations = step;

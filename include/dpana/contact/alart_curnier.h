@@ -15,13 +15,14 @@
 // projector on a facet; (c/|y|)(I - yy^T/|y|^2) on the circle; zero at a
 // vertex or interval end) and with respect to the radius c
 // (FrictionSet::projection_radius_derivative). Each step solves the dense
-// (d n + m) system by LU and is globalised by Armijo backtracking on
-// 1/2 ||F||^2; a singular Jacobian (e.g. at r = 0 with equality rows, when
-// alpha does not yet enter any pressed row) gets the minimum-norm
-// least-squares step. The method converges locally superlinearly but not
-// globally: when the line search fails, 20 k NSGS sweeps (k = 1, 2, ...) are
-// made from the current point (the alpha of NSGS's augmented Lagrangian is
-// taken over) and Newton resumes; after 10 failures it stops with
+// system by LU, after eliminating the elements that are not pressed and have
+// a zero projection derivative (their step is -F outright), and is globalised
+// by Armijo backtracking on 1/2 ||F||^2; a singular Jacobian (e.g. at r = 0
+// with equality rows, when alpha does not yet enter any pressed row) gets the
+// minimum-norm least-squares step. The method converges locally superlinearly
+// but not globally: when the line search fails, 20 k NSGS sweeps (k = 1, 2,
+// ...) are made from the current point (the alpha of NSGS's augmented
+// Lagrangian is taken over) and Newton resumes; after 10 failures it stops with
 // converged = false and says so. SolverResult::inner_iterations counts those
 // NSGS sweeps.
 //

@@ -28,7 +28,9 @@
 //     it stops as soon as the faces repeat. For the disc it converges
 //     locally quadratically. Globalised by an Armijo backtracking on
 //     1/2 ||F||^2; if the line search fails, a few PGS sweeps are made before
-//     Newton resumes.
+//     Newton resumes. Blocks with a zero projection derivative (radius 0,
+//     interval end, polygon vertex) have the step -F_j outright and are
+//     eliminated: only stick / facet / circle blocks enter the dense LU.
 #ifndef dpana_contact_friction_qp_h
 #define dpana_contact_friction_qp_h
 
