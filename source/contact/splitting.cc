@@ -232,10 +232,10 @@ namespace dpana
             {
               result.message =
                 "splitting stagnated: fixed point reached with residual " +
-                scientific(figures.natural_map) +
-                " above tolerance (inner solver accuracy" +
-                (inner_message.empty() ? std::string(")") :
-                                         "; " + inner_message + ")");
+                scientific(figures.natural_map) + " above tolerance (" +
+                (inner_message.empty() ?
+                   std::string("the inner tolerance limits the residual)") :
+                   "inner solver failed: " + inner_message + ")");
               return result;
             }
           if (figures.natural_map < 0.99 * best)

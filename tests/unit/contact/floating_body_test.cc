@@ -170,3 +170,20 @@ TEST(FloatingBody, ThreeDBlockOnGrid)
         EXPECT_LE(res.figures.equilibrium, equilibrium_tolerance(type) * 9.0);
       }
 }
+
+TEST(FloatingBody, InfeasibleSidewaysLoadIsReported)
+{
+  // H = 5 > mu P = 0.5 * 8: friction cannot hold the block, there is no
+  // static solution. Every solver must stop with converged = false and a
+  // message, quickly.
+  const ContactProblem p = block_2d(8, 8.0, 0.0, 5.0, 0.5, 0.0);
+  for (const SolverType type : all_solvers())
+    {
+      const SolverResult res = solve(p, options_for(type));
+      EXPECT_FALSE(res.converged) << to_string(type);
+      EXPECT_FALSE(res.message.empty()) << to_string(type);
+      // The equilibrium rows cannot all hold with a law-abiding r.
+      EXPECT_TRUE(res.residual > 1e-10 || res.figures.equilibrium > 1e-6)
+        << to_string(type);
+    }
+}

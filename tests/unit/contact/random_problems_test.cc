@@ -94,3 +94,29 @@ TEST(RandomProblems, ThreeDPolygon)
     for (const double mu : {0.0, 0.3, 1.0, 2.0})
       run_case({3, n, mu, ConeModel::polygon}, 3000 + n);
 }
+
+TEST(RandomProblems, RelaxationAndWarmStart)
+{
+  // Over- and under-relaxed PGS / NSGS reach the same solution (1e-7), and
+  // every solver started from a converged solution stops at once (one outer
+  // iteration for the splitting and NSGS, none for Newton).
+  const ContactProblem p = random_problem(3, 20, 0.5, 555, ConeModel::disc);
+  const SolverResult   reference = solve(p, options_for(SolverType::nsgs));
+  ASSERT_TRUE(reference.converged);
+  for (const SolverType type : {SolverType::splitting_pgs, SolverType::nsgs})
+    for (const double omega : {0.7, 1.3})
+      {
+        SolverOptions o        = options_for(type);
+        o.over_relaxation      = omega;
+        const SolverResult res = solve(p, o);
+        ASSERT_TRUE(res.converged) << to_string(type) << " omega " << omega;
+        EXPECT_LE(relative_difference(reference.r, res.r), 1e-7);
+      }
+  for (const SolverType type : all_solvers())
+    {
+      const SolverResult res = solve(p, options_for(type), &reference.r);
+      ASSERT_TRUE(res.converged) << to_string(type);
+      EXPECT_LE(res.iterations, 1u) << to_string(type);
+      EXPECT_LE(relative_difference(reference.r, res.r), 1e-8);
+    }
+}
