@@ -589,7 +589,7 @@ TEST(Geometry, GmshFormat22And41)
 TEST(Geometry, GmshFilesWrittenByGmsh)
 {
   // The plate [0, 4] x [0, 2] with a hole of radius 0.5 centred at (2, 1),
-  // meshed by gmsh itself (tests/data/make_plate_with_hole.cc) and saved in
+  // meshed by gmsh itself (tests/data/make_gmsh_meshes.cc) and saved in
   // both formats: several node and element blocks, point entities, curves
   // split in several entities.
   unsigned int n_cells = 0;
@@ -644,6 +644,34 @@ TEST(Geometry, GmshRefined3D)
     {
       expect_relative(m.boundary_measure.at(n.second), 1.);
       EXPECT_EQ(m.n_boundary_faces.at(n.second), 8u);
+    }
+}
+
+
+
+TEST(Geometry, GmshTetrahedraFormat41)
+{
+  // The column [0, 1] x [0, 1] x [0, 2] meshed by gmsh with tetrahedra,
+  // format 4.1, boundary groups bottom (z = 0), top (z = 2) and sides.
+  for (const unsigned int k : {0u, 1u})
+    {
+      const auto geometry = make_geometry<3>(
+        "set Type = gmsh\nset Mesh file = " + data_dir() +
+        "column_v41.msh\nset Global refinements = " + std::to_string(k) + "\n");
+      EXPECT_EQ(geometry.boundary_names(),
+                (std::map<std::string, boundary_id>{{"bottom", 1},
+                                                    {"top", 2},
+                                                    {"sides", 3}}));
+      dealii::Triangulation<3> tria;
+      geometry.create_triangulation(tria);
+      const Measures m = measure(tria);
+      EXPECT_GT(m.n_cells, 10u);
+      EXPECT_GT(m.min_jxw, 0.);
+      expect_relative(m.volume, 2.);
+      expect_relative(m.boundary_measure.at(1), 1.);
+      expect_relative(m.boundary_measure.at(2), 1.);
+      expect_relative(m.boundary_measure.at(3), 8.);
+      EXPECT_EQ(m.boundary_measure.size(), 3u);
     }
 }
 

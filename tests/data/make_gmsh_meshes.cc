@@ -46,5 +46,41 @@ main(int argc, char **argv)
   gmsh::write(dir + "/plate_with_hole_v41.msh");
   gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
   gmsh::write(dir + "/plate_with_hole_v22.msh");
+  gmsh::model::remove();
+
+  gmsh::model::add("column");
+  // The column [0, 1] x [0, 1] x [0, 2].
+  const int box = gmsh::model::occ::addBox(0, 0, 0, 1, 1, 2);
+  gmsh::model::occ::synchronize();
+  std::vector<std::pair<int, int>> surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  std::vector<int> bottom, top, sides;
+  for (const auto &s : surfaces)
+    {
+      double xmin, ymin, zmin, xmax, ymax, zmax;
+      gmsh::model::getBoundingBox(
+        2, s.second, xmin, ymin, zmin, xmax, ymax, zmax);
+      if (zmax < 0.1)
+        bottom.push_back(s.second);
+      else if (zmin > 1.9)
+        top.push_back(s.second);
+      else
+        sides.push_back(s.second);
+    }
+  gmsh::model::addPhysicalGroup(2, bottom, 1);
+  gmsh::model::setPhysicalName(2, 1, "bottom");
+  gmsh::model::addPhysicalGroup(2, top, 2);
+  gmsh::model::setPhysicalName(2, 2, "top");
+  gmsh::model::addPhysicalGroup(2, sides, 3);
+  gmsh::model::setPhysicalName(2, 3, "sides");
+  gmsh::model::addPhysicalGroup(3, {box}, 4);
+  gmsh::model::setPhysicalName(3, 4, "column");
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.9);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.9);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::model::mesh::generate(3);
+  gmsh::option::setNumber("Mesh.Binary", 0);
+  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+  gmsh::write(dir + "/column_v41.msh");
   gmsh::finalize();
 }
