@@ -1,0 +1,182 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_condensation_condenser_h
+#define dpana_condensation_condenser_h
+
+#include <dpana/body/body.h>
+#include <dpana/contact_surface/contact_surface.h>
+#include <dpana/linear_algebra/sparse_cholesky.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  namespace condensation
+  {
+    /**
+     * The condensation of one elastic body on its candidate contact surface
+     * (seed 000, eqs. 4.1-4.9).
+     *
+     * <h3>The operator V</h3>
+     *
+     * The contact unknowns are the piecewise constant tractions
+     * r = (N_0, T_0, N_1, T_1, ...) (interleaved; T has dim - 1 components)
+     * of the contact elements, in the frame (n, tau) of each element. The
+     * work of r on a displacement u is u^T V r, with column dim j + k of V the
+     * nodal forces of the unit traction e_k (e_0 = n, e_k = tau_k) on the
+     * faces of element j:
+     * @f[
+     *   V_{i, dj+k} = \int_{\Gamma_j} \varphi_i \cdot e_k \, ds ,
+     * @f]
+     * integrated with a QGaussSimplex face rule through the body's
+     * MappingFE. Hence (V^T u)_{dj+k} is the integral of u . e_k over the
+     * element: area times mean displacement.
+     *
+     * <h3>A and s_o</h3>
+     *
+     * With the kinematic conditions eliminated (u = M v + u_bar, reduced
+     * stiffness K_r, see SparseCholesky), the displacement is
+     * u = u_o + Z r, u_o = M K_r^{-1} f_r + u_bar, Z = M K_r^{-1} M^T V, and
+     * the contact displacements are
+     * @f[
+     *   V^T u = A r + s_o, \qquad A = V^T Z, \quad s_o = V^T u_o .
+     * @f]
+     * Z is computed by blocked multi-right-hand-side solves with one sparse
+     * Cholesky factorisation; A = V^T Z is symmetric in exact arithmetic
+     * (V^T M K_r^{-1} M^T V), and it is symmetrised, 1/2 (A + A^T), after the
+     * relative asymmetry ||A - A^T||_F / ||A||_F is recorded. A is positive
+     * definite when the columns of M^T V are independent, which the grouping
+     * of faces into contact elements (LBB) ensures.
+     *
+     * <h3>Floating bodies</h3>
+     *
+     * If the kinematic conditions leave rigid motions free (the columns of
+     * R, from Body::free_rigid_modes()), K_r is singular. m = rank(R) nodal
+     * values are then held by fictitious supports: m free degrees of freedom
+     * chosen by a pivoted QR of the rows of R so that R restricted to them is
+     * invertible (a statically determinate support of the rigid motions).
+     * With them K_s is positive definite and u = u_o + Z r + R alpha, alpha
+     * the unknown rigid displacement. The reactions of the fictitious
+     * supports vanish iff the body is in equilibrium, R^T (f + V r) = 0,
+     * that is
+     * @f[
+     *   G r = e, \qquad G = R^T V, \quad e = -R^T f ,
+     * @f]
+     * and the contact displacements pick up V^T R alpha = G^T alpha: exactly
+     * the equality rows of the ContactProblem.
+     */
+    template <int dim>
+    class Condenser
+    {
+    public:
+      Condenser(const Body<dim>                            &body,
+                const contact_surface::ContactSurface<dim> &surface);
+
+      /**
+       * Assemble V (sparse, n_dofs x dim n_elements).
+       */
+      void
+      assemble_coupling();
+
+      /**
+       * Choose the fictitious supports of the free rigid motions, factor the
+       * reduced stiffness and solve for u_o.
+       */
+      void
+      factorize();
+
+      /**
+       * A, s_o, G, e by blocked solves: @p columns_per_pass columns of V at a
+       * time are handed to SparseCholesky::solve() (which itself works in
+       * blocks of its block size).
+       */
+      void
+      condense(const unsigned int columns_per_pass = 256);
+
+      /**
+       * The displacement u = u_o + K_s^{-1} V r + R alpha of the body.
+       */
+      dealii::Vector<double>
+      recover(const Eigen::VectorXd &r, const Eigen::VectorXd &alpha) const;
+
+      /**
+       * V^T u: the integrals of u . e_k over the contact elements.
+       */
+      Eigen::VectorXd
+      surface_response(const dealii::Vector<double> &u) const;
+
+      const Eigen::MatrixXd &
+      compliance() const
+      {
+        return A;
+      }
+      const Eigen::VectorXd &
+      load_term() const
+      {
+        return s_o;
+      }
+      const Eigen::MatrixXd &
+      equilibrium_matrix() const
+      {
+        return G;
+      }
+      const Eigen::VectorXd &
+      equilibrium_rhs() const
+      {
+        return e;
+      }
+      const Eigen::SparseMatrix<double> &
+      coupling() const
+      {
+        return V;
+      }
+      double
+      asymmetry() const
+      {
+        return relative_asymmetry;
+      }
+      unsigned int
+      n_free_modes() const
+      {
+        return R.cols();
+      }
+      const std::vector<unsigned int> &
+      fictitious_supports() const
+      {
+        return supports;
+      }
+      const linear_algebra::SparseCholesky &
+      factorization() const
+      {
+        return cholesky;
+      }
+
+    private:
+      const Body<dim>                            &body;
+      const contact_surface::ContactSurface<dim> &surface;
+
+      Eigen::SparseMatrix<double>       V;
+      Eigen::MatrixXd                   R;
+      std::vector<unsigned int>         supports;
+      dealii::AffineConstraints<double> constraints;
+      linear_algebra::SparseCholesky    cholesky;
+      Eigen::VectorXd                   u_o;
+
+      Eigen::MatrixXd A;
+      Eigen::VectorXd s_o;
+      Eigen::MatrixXd G;
+      Eigen::VectorXd e;
+      double          relative_asymmetry = 0;
+    };
+  } // namespace condensation
+} // namespace dpana
+
+#endif

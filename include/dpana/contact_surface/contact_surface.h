@@ -1,0 +1,250 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_contact_surface_contact_surface_h
+#define dpana_contact_surface_contact_surface_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  namespace contact_surface
+  {
+    /**
+     * One boundary face of a body on the candidate contact surface: the cell
+     * it belongs to and its local face number, with its (flat, P1) geometry.
+     */
+    template <int dim>
+    struct Face
+    {
+      typename dealii::Triangulation<dim>::active_cell_iterator cell;
+      unsigned int                                              face_no;
+      dealii::Point<dim>                                        centroid;
+      dealii::Tensor<1, dim>                                    normal;
+      double                                                    area;
+      std::vector<unsigned int>                                 vertices;
+      std::vector<dealii::Point<dim>>                           points;
+    };
+
+    /**
+     * A contact element: a group of adjacent faces that carries one
+     * piecewise constant traction (N, T) in its local frame.
+     *
+     * - normal: the direction n along which the normal traction acts and the
+     *   normal displacement is measured. It points out of the body, towards
+     *   the obstacle or the other body.
+     * - tangents: tau (2D) or tau_1, tau_2 (3D), so that (n, tau) or
+     *   (n, tau_1, tau_2) is a right-handed orthonormal frame (for the second
+     *   body of a pair the frame of its partner, negated).
+     * - gap_integral: the integral over the element of the initial gap
+     *   g_o(x) >= 0 measured along n (mm^3 in 3D, mm^2 in 2D); the mean gap
+     *   is gap_integral / area.
+     * - s_min, s_max (and t_min, t_max in 3D): the extent of the element
+     *   along the surface's tangent directions, used for plots and zone
+     *   extents.
+     */
+    template <int dim>
+    struct ContactElement
+    {
+      std::vector<unsigned int>                   faces;
+      dealii::Tensor<1, dim>                      normal;
+      std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
+      double                                      area = 0;
+      dealii::Point<dim>                          centroid;
+      double                                      gap_integral = 0;
+      double                                      s = 0, s_min = 0, s_max = 0;
+      double                                      t = 0, t_min = 0, t_max = 0;
+      // True if the element touches a face of the same boundary that was
+      // left out of the candidate surface: contact reaching such an element
+      // means that the candidate surface may be too small.
+      bool at_open_edge = false;
+
+      double
+      mean_gap() const
+      {
+        return gap_integral / area;
+      }
+    };
+
+    /**
+     * The candidate contact surface Gamma_c of one body, grouped into
+     * contact elements.
+     *
+     * <h3>Candidate faces</h3>
+     *
+     * The faces of a named boundary, optionally only those whose centroid x
+     * lies in the box |x_d - x0_d| <= w of a candidate region (centre x0,
+     * half width w). The seeds require that the result not depend on Gamma_c
+     * as long as it contains the whole contact zone; the region makes this
+     * checkable.
+     *
+     * <h3>Contact elements</h3>
+     *
+     * The tractions are constant on each contact element. With one constant
+     * per face the discrete inf-sup (LBB) condition fails for P1
+     * displacements, so several faces are grouped: in 2D the edges are
+     * sorted along the surface and consecutive runs of @p faces_per_element
+     * adjacent edges (default 2) form an element. In 3D the default is 8
+     * triangles, the 2 x 2 patch of quadrilaterals each split in two
+     * triangles: on a structured surface (its vertices lie on the lines of a
+     * tangential lattice) faces are grouped by lattice cells q x q with
+     * 2 q^2 = faces_per_element; otherwise adjacent faces are agglomerated
+     * greedily, each group grown from the first free face (in the order of
+     * the tangential coordinates) by the adjacent free face nearest to its
+     * centroid until it holds faces_per_element faces.
+     *
+     * <h3>Frames and gaps</h3>
+     *
+     * If a contact direction is given (the normal of the tangent plane at
+     * the first contact point, for the "increasing" problems of Hertz type),
+     * every element uses it; otherwise each element uses the area-weighted
+     * mean outward normal of its faces. The initial gap is measured along n:
+     * to a rigid plane (set_plane_gap()) or to the paired faces of the other
+     * body (pair()). The faces are flat (P1 mapping), and the gap is linear on
+     * each face, so the midpoint rule integrates it exactly.
+     */
+    template <int dim>
+    class ContactSurface
+    {
+    public:
+      struct Options
+      {
+        // Name of the boundary for messages, and its id.
+        std::string                boundary;
+        dealii::types::boundary_id boundary_id = 0;
+        // Body name for messages ("Body 1").
+        std::string body;
+        // Candidate region: centre and half width (<= 0: whole boundary).
+        dealii::Point<dim> region_centre;
+        double             region_half_width = 0;
+        // Faces per contact element (0: 2 in 2D, 8 in 3D).
+        unsigned int faces_per_element = 0;
+        // Contact direction (zero: the element's mean outward normal).
+        dealii::Tensor<1, dim> direction;
+      };
+
+      /**
+       * Collect the candidate faces of @p tria and group them. Throws
+       * dpana::InputError if no face qualifies.
+       */
+      void
+      build(const dealii::Triangulation<dim> &tria, const Options &options);
+
+      /**
+       * Build the surface of the second body of a pair from the faces of
+       * @p tria that match, face by face, those of @p first (same
+       * tangential position of the centroid, same area): the elements are
+       * the same groups, with the frame of @p first negated, and the gap of
+       * @p first is set to the normal distance between the paired faces.
+       * Throws dpana::InputError if the two discretisations do not match.
+       */
+      void
+      pair(const dealii::Triangulation<dim> &tria,
+           const Options                    &options,
+           ContactSurface<dim>              &first);
+
+      /**
+       * Gaps to the rigid plane through @p point with normal -n of each
+       * element: g_o(x) = (point - x) . n.
+       */
+      void
+      set_plane_gap(const dealii::Point<dim> &point);
+
+      /**
+       * The candidate vertex farthest along the contact direction (the first
+       * contact point with a plane normal to it).
+       */
+      dealii::Point<dim>
+      first_contact_point() const;
+
+      unsigned int
+      n_elements() const
+      {
+        return elements.size();
+      }
+      const ContactElement<dim> &
+      element(const unsigned int j) const
+      {
+        return elements[j];
+      }
+      const std::vector<ContactElement<dim>> &
+      get_elements() const
+      {
+        return elements;
+      }
+      const std::vector<Face<dim>> &
+      get_faces() const
+      {
+        return faces;
+      }
+      const Options &
+      options() const
+      {
+        return opts;
+      }
+
+      /**
+       * Mean outward normal of the whole surface and the tangential frame
+       * used for the coordinates s (and t).
+       */
+      const dealii::Tensor<1, dim> &
+      surface_normal() const
+      {
+        return n_surface;
+      }
+      const std::array<dealii::Tensor<1, dim>, dim - 1> &
+      surface_tangents() const
+      {
+        return tau_surface;
+      }
+
+      /**
+       * The element indices sorted by the tangential coordinate (s, then t).
+       */
+      std::vector<unsigned int>
+      sorted_elements() const;
+
+      /**
+       * A one-line description for the log.
+       */
+      std::string
+      description() const;
+
+      /**
+       * A right-handed orthonormal tangential frame for the unit normal n.
+       */
+      static std::array<dealii::Tensor<1, dim>, dim - 1>
+      tangential_frame(const dealii::Tensor<1, dim> &n);
+
+    private:
+      Options                                     opts;
+      std::vector<Face<dim>>                      faces;
+      std::vector<ContactElement<dim>>            elements;
+      dealii::Tensor<1, dim>                      n_surface;
+      std::array<dealii::Tensor<1, dim>, dim - 1> tau_surface;
+      std::set<unsigned int>                      excluded_vertices;
+
+      void
+      collect_faces(const dealii::Triangulation<dim> &tria);
+      void
+      group_faces();
+      bool
+      group_on_lattice(const unsigned int q);
+      void
+      group_greedy(const unsigned int size);
+      void
+      finish_elements();
+    };
+  } // namespace contact_surface
+} // namespace dpana
+
+#endif

@@ -1,0 +1,227 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_scene_contact_scene_h
+#define dpana_scene_contact_scene_h
+
+#include <dpana/body/body.h>
+#include <dpana/condensation/condenser.h>
+#include <dpana/contact/solver.h>
+#include <dpana/contact_surface/contact_surface.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <Eigen/Dense>
+
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dpana
+{
+  namespace scene
+  {
+    /**
+     * True if the parameter file @p prm_file has a top-level
+     * `subsection Contact`: such a file describes a contact run and is
+     * handed to run_contact().
+     */
+    bool
+    is_contact_file(const std::string &prm_file);
+
+    /**
+     * Declare every parameter of a contact run: the top-level entries
+     * `Dimension` and `Number of bodies`, the subsections `Body 1` (and
+     * `Body 2`) of Body<dim>, and the subsection `Contact` (candidate
+     * surface, friction, solver, reference values, output).
+     */
+    void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const unsigned int        dim,
+                       const unsigned int        n_bodies);
+
+    /**
+     * Run the contact scene of @p prm_file: read the dimension and the
+     * number of bodies, then build the bodies, condense them on the
+     * candidate contact surface, solve the contact problem, recover the
+     * displacements and stresses and write the output. Errors in the input
+     * are printed as one line "dpana: error: ..." on std::cerr. Returns the
+     * exit status: 0 on success (even if the contact solver did not
+     * converge: that is reported in the log and the JSON summary), 1 on an
+     * input error.
+     */
+    int
+    run_contact(const std::string &prm_file);
+
+    /**
+     * The values a run produces, for the log, the JSON summary and tests.
+     */
+    struct Zone
+    {
+      contact::ContactStatus status;
+      double                 from, to; // along s (2D) or bounding box in s
+      double                 t_from = 0, t_to = 0; // 3D: bounding box in t
+      unsigned int           n_elements = 0;
+    };
+
+    struct Summary
+    {
+      unsigned int      n_elements = 0;
+      double            half_width = 0; // outer edge of the contact zone
+      double            half_width_centroid    = 0;
+      double            max_pressure           = 0; // max(-N)
+      double            normal_resultant       = 0; // sum(-N area)
+      bool              candidate_edge_warning = false;
+      std::vector<Zone> zones;
+      std::map<std::string, double> timings;
+      contact::SolverResult         result;
+      double                        asymmetry = 0;
+      std::vector<double>           element_residual;
+    };
+
+    /**
+     * A contact run of dimension dim, usable by programs and tests: parse,
+     * then run() (or the phases one by one).
+     */
+    template <int dim>
+    class ContactScene
+    {
+    public:
+      ContactScene();
+      ~ContactScene();
+
+      /**
+       * Read all parameters (the handler has been declared by
+       * declare_parameters() and filled).
+       */
+      void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const unsigned int        n_bodies);
+
+      /**
+       * All phases; writes the output unless @p write_output is false.
+       */
+      void
+      run(const bool write_output = true);
+
+      void
+      setup_bodies();
+      void
+      setup_surfaces();
+      void
+      condense();
+      void
+      solve();
+      void
+      recover();
+      void
+      write_output();
+      void
+      print_comparison(std::ostream &out) const;
+
+      const Summary &
+      summary() const
+      {
+        return summary_;
+      }
+      const contact::ContactProblem &
+      problem() const
+      {
+        return problem_;
+      }
+      const contact_surface::ContactSurface<dim> &
+      surface(const unsigned int b) const
+      {
+        return *surfaces[b];
+      }
+      const condensation::Condenser<dim> &
+      condenser(const unsigned int b) const
+      {
+        return *condensers[b];
+      }
+      Body<dim> &
+      body(const unsigned int b)
+      {
+        return *bodies[b];
+      }
+      const dealii::Vector<double> &
+      displacement(const unsigned int b) const
+      {
+        return displacements[b];
+      }
+      void
+      set_output_directory(const std::string &dir)
+      {
+        output_directory = dir;
+      }
+      void
+      set_quiet(const bool q)
+      {
+        quiet = q;
+      }
+      // Tractions of element j: N, T (force / area, seeds' signs).
+      double
+      normal_traction(const unsigned int j) const
+      {
+        return summary_.result.r(dim * j);
+      }
+      double
+      tangential_traction(const unsigned int j, const unsigned int k = 0) const
+      {
+        return summary_.result.r(dim * j + 1 + k);
+      }
+
+    private:
+      std::vector<std::unique_ptr<Body<dim>>> bodies;
+      std::vector<std::unique_ptr<contact_surface::ContactSurface<dim>>>
+                                                                 surfaces;
+      std::vector<std::unique_ptr<condensation::Condenser<dim>>> condensers;
+      std::vector<dealii::Vector<double>>                        displacements;
+
+      // Contact parameters.
+      std::vector<std::string> boundary;
+      dealii::Point<dim>       region_centre;
+      double                   region_half_width = 0;
+      unsigned int             faces_per_element = 0;
+      dealii::Tensor<1, dim>   direction;
+      bool                     obstacle_point_given = false;
+      dealii::Point<dim>       obstacle_point;
+      double                   friction      = 0;
+      contact::ConeModel       cone          = contact::ConeModel::disc;
+      unsigned int             polygon_sides = 16;
+      contact::SolverOptions   solver_options;
+      unsigned int             columns_per_pass = 256;
+
+      // Reference values.
+      std::string reference_type          = "none";
+      double      uniform_normal_traction = 0;
+      double      hertz_load = 0, radius_1 = 0, radius_2 = 0;
+      double      seed_half_width = 0, seed_max_pressure = 0;
+      std::string reference_csv;
+
+      // Output.
+      std::string output_directory = "output";
+      bool        plot             = true;
+      bool        quiet            = false;
+      std::string parameters_text;
+
+      contact::ContactProblem problem_;
+      Summary                 summary_;
+
+      void
+      compute_summary();
+      void
+      write_body_vtu(const unsigned int b) const;
+      void
+      write_surface_vtu() const;
+      void
+      write_csv(const std::string &file) const;
+      void
+      write_json() const;
+    };
+  } // namespace scene
+} // namespace dpana
+
+#endif
