@@ -197,7 +197,7 @@ namespace dpana
         struct ProblemDeleter
         {
           void
-          operator()(FrictionContactProblem *p) const
+          operator()(::FrictionContactProblem *p) const
           {
             if (p != nullptr)
               frictionContactProblem_free(p);
@@ -206,15 +206,15 @@ namespace dpana
         struct OptionsDeleter
         {
           void
-          operator()(SolverOptions *o) const
+          operator()(::SolverOptions *o) const
           {
             if (o != nullptr)
               solver_options_delete(o);
           }
         };
         using ProblemPtr =
-          std::unique_ptr<FrictionContactProblem, ProblemDeleter>;
-        using OptionsPtr = std::unique_ptr<SolverOptions, OptionsDeleter>;
+          std::unique_ptr<::FrictionContactProblem, ProblemDeleter>;
+        using OptionsPtr = std::unique_ptr<::SolverOptions, OptionsDeleter>;
 
         inline double *
         malloc_copy(const Eigen::VectorXd &v)
@@ -256,7 +256,7 @@ namespace dpana
               M = NM_new_SBM(n, n, sbm);
             }
 
-          FrictionContactProblem *p =
+          ::FrictionContactProblem *p =
             frictionContactProblem_new_with_data(static_cast<int>(data.dim),
                                                  nc,
                                                  M,
