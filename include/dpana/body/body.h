@@ -267,8 +267,11 @@ namespace dpana
 
     /**
      * For every named boundary that carries a kinematic condition, the
-     * resultant of the reaction forces at its vertices (N, or N/mm in 2D).
-     * A vertex shared by two such boundaries counts for both.
+     * resultant of the support forces r = K u - f on the nodal values its
+     * condition constrains (N, or N/mm in 2D). A value constrained by two
+     * conditions (at a corner) belongs to the first one applied (prescribed
+     * displacements, then fixed components, then symmetry planes), so the
+     * reactions of all boundaries add up to minus applied_load_resultant().
      */
     const std::map<std::string, dealii::Tensor<1, dim>> &
     reactions() const;
@@ -318,7 +321,10 @@ namespace dpana
     std::vector<double>                           stress_zz;
     std::vector<double>                           von_mises;
     std::map<std::string, dealii::Tensor<1, dim>> reaction;
-    dealii::Tensor<1, dim>                        applied_resultant;
+    std::map<std::string, std::vector<dealii::types::global_dof_index>>
+                              constrained_by;
+    std::vector<unsigned int> component_of_dof;
+    dealii::Tensor<1, dim>    applied_resultant;
 
     dealii::types::boundary_id
     resolve(const std::string &boundary, const std::string &parameter) const;

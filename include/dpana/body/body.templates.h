@@ -66,7 +66,15 @@ namespace dpana
   {
     geometry = std::make_unique<geometry::Geometry<dim>>();
     prm.enter_subsection("Geometry");
-    geometry->parse_parameters(prm);
+    try
+      {
+        geometry->parse_parameters(prm);
+      }
+    catch (const InputError &e)
+      {
+        // Name the body in the message, as all other entries do.
+        throw InputError(name_ + " / " + e.what());
+      }
     prm.leave_subsection();
     prm.enter_subsection("Material");
     material_.parse_parameters(prm, name_ + " / Material");
@@ -264,6 +272,11 @@ namespace dpana
           for (unsigned int c = 0; c < dim; ++c)
             dofs_of_vertex[cell->vertex_index(v)][c] = local[v * dim + c];
       }
+    component_of_dof.assign(dof_handler_.n_dofs(), 0);
+    for (const auto &d : dofs_of_vertex)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (d[c] != dealii::numbers::invalid_dof_index)
+          component_of_dof[d[c]] = c;
 
     make_constraints();
 
@@ -293,6 +306,7 @@ namespace dpana
   Body<dim>::make_constraints()
   {
     constraints_.clear();
+    constrained_by.clear();
 
     for (const auto &p : bcs.prescribed)
       {
@@ -307,6 +321,7 @@ namespace dpana
                 !constraints_.is_constrained(dofs_of_vertex[v][c]))
               {
                 constraints_.add_line(dofs_of_vertex[v][c]);
+                constrained_by[p.boundary].push_back(dofs_of_vertex[v][c]);
                 constraints_.set_inhomogeneity(
                   dofs_of_vertex[v][c],
                   p.displacement->value(tria.get_vertices()[v], c));
@@ -320,7 +335,10 @@ namespace dpana
           for (unsigned int c = 0; c < dim; ++c)
             if (f.components[c] &&
                 !constraints_.is_constrained(dofs_of_vertex[v][c]))
-              constraints_.add_line(dofs_of_vertex[v][c]);
+              {
+                constraints_.add_line(dofs_of_vertex[v][c]);
+                constrained_by[f.boundary].push_back(dofs_of_vertex[v][c]);
+              }
       }
 
     // Symmetry: the normal n of a flat boundary is computed from its faces
@@ -364,12 +382,18 @@ namespace dpana
             if (constraints_.is_constrained(dofs[k]))
               continue;
             constraints_.add_line(dofs[k]);
+            constrained_by[s.boundary].push_back(dofs[k]);
             if (!axis_aligned)
               for (unsigned int j = 0; j < dim; ++j)
                 if (j != k && normal[j] != 0.0)
-                  constraints_.add_entry(dofs[k],
-                                         dofs[j],
-                                         -normal[j] / normal[k]);
+                  {
+                    constraints_.add_entry(dofs[k],
+                                           dofs[j],
+                                           -normal[j] / normal[k]);
+                    // The support force of an inclined plane has all
+                    // components: r_j = -a_j r_k at the free values.
+                    constrained_by[s.boundary].push_back(dofs[j]);
+                  }
           }
       }
 
@@ -811,16 +835,19 @@ namespace dpana
             break;
           }
 
+    // The reaction of a boundary: the sum of r over the values its
+    // condition constrains (a value constrained by an earlier condition
+    // belongs to that one, so that the reactions add up to minus the load
+    // resultant).
     reaction.clear();
-    std::set<std::string> supported;
-    for (const auto &[boundary, parameter] : bcs.used_boundaries())
-      supported.insert(boundary);
-    for (const auto &boundary : supported)
+    for (const auto &[boundary, dofs] : constrained_by)
       {
         dealii::Tensor<1, dim> R;
-        for (const unsigned int v : boundary_vertices(names.at(boundary)))
-          for (unsigned int c = 0; c < dim; ++c)
-            R[c] += residual[dofs_of_vertex[v][c]];
+        for (const auto dof : dofs)
+          {
+            const unsigned int c = component_of_dof[dof];
+            R[c] += residual[dof];
+          }
         reaction[boundary] = R;
       }
   }
