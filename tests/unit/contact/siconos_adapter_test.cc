@@ -39,7 +39,9 @@ namespace
           EXPECT_GT(p.n_separated, 0u);
           EXPECT_GT(p.n_slip, 0u);
           if (mu > 0)
-            EXPECT_GT(p.n_stick, 0u);
+            {
+              EXPECT_GT(p.n_stick, 0u);
+            }
         }
   }
 
