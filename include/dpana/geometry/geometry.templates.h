@@ -552,9 +552,10 @@ namespace dpana
     //   x \mapsto c - (c - l)\left(\frac{c - x}{c - l}\right)^p \quad (x < c).
     // @f]
     // It is monotone and fixes $l$, $c$ and $u$, so it maps the brick onto
-    // itself and every boundary face stays on its side. Near $c$ the cells
-    // shrink by the factor $t^{p-1}$ of the derivative. The boundary ids are
-    // then set from the face centres, after the global refinements.
+    // itself and every boundary face stays on its side. The local cell size
+    // is multiplied by the derivative $p\,t^{p-1}$, $t$ the relative distance
+    // from $c$, which is small near $c$. The boundary ids are then set from
+    // the face centres, after the global refinements.
     template <int dim>
     void
     Geometry<dim>::create_brick(dealii::Triangulation<dim> &tria) const
@@ -631,9 +632,10 @@ namespace dpana
     // contact refinements are therefore applied to the quadrilateral mesh.
     //
     // The local refinements leave hanging nodes, which
-    // GridGenerator::convert_hypercube_to_simplex_mesh cannot handle (it
-    // splits every active cell on its own and would produce a
-    // non-conforming simplex mesh). The quadrilaterals are therefore split
+    // GridGenerator::convert_hypercube_to_simplex_mesh does not accept
+    // (deal.II 9.4 throws ExcNotImplemented for a mesh with hanging nodes;
+    // splitting each cell on its own could not give a conforming mesh
+    // anyway). The quadrilaterals are therefore split
     // into triangles here: each active quadrilateral becomes a fan of
     // triangles around its centre, one triangle per edge of its boundary
     // polygon, where the boundary polygon of a cell includes the midpoint
