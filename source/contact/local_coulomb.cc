@@ -20,7 +20,7 @@ namespace dpana
                      const double      *q,
                      const double      *r)
       {
-        const unsigned int d = set.tangential_dim() + 1;
+        const unsigned int d    = set.tangential_dim() + 1;
         double             u[3] = {0.0, 0.0, 0.0}, x[3], p[3], tr = 0.0;
         for (unsigned int a = 0; a < d; ++a)
           {
