@@ -152,12 +152,35 @@ namespace dpana
       double       best       = std::numeric_limits<double>::max();
       unsigned int since_best = 0;
       std::string  inner_message;
+      bool         exact_inner         = false;
+      double       inner_tolerance_now = options.inner_tolerance;
 
       for (unsigned int k = 1; k <= options.max_iterations; ++k)
         {
           result.iterations = k;
           r_old             = result.r;
           inner_message.clear();
+
+          // Inexact inner solves: tolerance 0.1 times the last outer
+          // residual, between inner_tolerance and 1e-4 (exact solves of
+          // subproblems whose data are still far from converged are wasted).
+          if (options.adaptive_inner_tolerance && !exact_inner)
+            {
+              const double last = result.residual_history.empty() ?
+                                    1e-4 :
+                                    0.1 * result.residual_history.back();
+              const double t =
+                std::max(options.inner_tolerance, std::min(1e-4, last));
+              normal.set_tolerance(t);
+              friction.set_tolerance(t);
+              inner_tolerance_now = t;
+            }
+          else
+            {
+              normal.set_tolerance(options.inner_tolerance);
+              friction.set_tolerance(options.inner_tolerance);
+              inner_tolerance_now = options.inner_tolerance;
+            }
 
           // T-step at fixed N.
           for (unsigned int j = 0; j < n; ++j)
@@ -227,6 +250,12 @@ namespace dpana
             {
               result.message = "splitting diverged (non-finite residual)";
               return result;
+            }
+          if (change <= 1e-15 && inner_tolerance_now > options.inner_tolerance)
+            {
+              // No progress with inexact inner solves: go on with exact ones.
+              exact_inner = true;
+              continue;
             }
           if (change <= 1e-15)
             {

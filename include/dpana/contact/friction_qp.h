@@ -71,6 +71,14 @@ namespace dpana
                        Eigen::VectorXd       &T,
                        Eigen::VectorXd       &beta);
 
+      // Change the tolerance of the following solves (the splitting tightens
+      // it as the outer residual decreases).
+      void
+      set_tolerance(const double tolerance)
+      {
+        options.tolerance = tolerance;
+      }
+
     private:
       int
       pgs(const Eigen::MatrixXd     &matrix,

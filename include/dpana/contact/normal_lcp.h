@@ -75,6 +75,14 @@ namespace dpana
                        Eigen::VectorXd       &N,
                        Eigen::VectorXd       &alpha);
 
+      // Change the tolerance of the following solves (the splitting tightens
+      // it as the outer residual decreases).
+      void
+      set_tolerance(const double tolerance)
+      {
+        options.tolerance = tolerance;
+      }
+
     private:
       // PGS sweeps on (matrix, rhs) until the relative change is below the
       // tolerance or max_sweeps; returns the number of sweeps (negative if

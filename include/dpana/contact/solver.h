@@ -69,6 +69,10 @@ namespace dpana
       // instead of stopping. Under-relaxation cures the cycling of NSGS seen
       // for large mu.
       bool adaptive_relaxation = true;
+      // Splitting only: solve the subproblems to the relative tolerance
+      // clamp(0.1 * last outer residual, inner_tolerance, 1e-4) instead of
+      // inner_tolerance throughout.
+      bool adaptive_inner_tolerance = true;
     };
 
     struct SolverResult

@@ -24,6 +24,10 @@
 // full problem; and since the N-step comes last, G r = e holds to the
 // accuracy of the N-step (round-off for the active-set solver).
 //
+// Inner tolerance: with adaptive_inner_tolerance (default) the subproblems
+// are solved to clamp(0.1 * last outer residual, inner_tolerance, 1e-4);
+// should that stall the iterates, the remaining steps use inner_tolerance.
+//
 // Stopping: converged when the shared residual (residual.h) is <= tolerance
 // and, with equality rows, ||G r - e||_inf <= tolerance (||G||_inf ||r||_inf
 // + ||e||_inf).
