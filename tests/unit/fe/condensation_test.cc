@@ -1,0 +1,365 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+//
+// Tests of the condensation on the candidate contact surface and of whole
+// contact runs against exact or independent results.
+
+#include <dpana/body/body.h>
+#include <dpana/scene/contact_scene.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <iostream>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace dpana;
+
+  // A 2D block lower-left (0, 0), upper-right (w, h), n x m cells, on the
+  // bottom candidate surface. `extra` is appended to the Body 1 subsection,
+  // `contact` to the Contact subsection.
+  std::string
+  block_prm(const std::string &conditions,
+            const std::string &loads,
+            const std::string &contact,
+            const unsigned int n = 8)
+  {
+    const std::string N = std::to_string(n);
+    return "set Dimension = 2\n"
+           "set Number of bodies = 1\n"
+           "subsection Body 1\n"
+           "  subsection Geometry\n"
+           "    set Type = rectangle\n"
+           "    set Lower corner = 0, 0\n"
+           "    set Upper corner = 40, 40\n"
+           "    set Subdivisions = " +
+           N + ", " + N +
+           "\n"
+           "  end\n"
+           "  subsection Boundary conditions\n" +
+           conditions +
+           "\n"
+           "  end\n"
+           "  subsection Loads\n" +
+           loads +
+           "\n"
+           "  end\n"
+           "end\n"
+           "subsection Contact\n"
+           "  set Boundary 1 = bottom\n"
+           "  set Contact direction = 0, -1\n" +
+           contact +
+           "\n"
+           "  subsection Output\n"
+           "    set Plot = false\n"
+           "  end\n"
+           "end\n";
+  }
+
+  template <int dim>
+  std::unique_ptr<scene::ContactScene<dim>>
+  make_scene(const std::string &text, const unsigned int n_bodies = 1)
+  {
+    dealii::ParameterHandler prm;
+    scene::declare_parameters(prm, dim, n_bodies);
+    prm.parse_input_from_string(text);
+    auto s = std::make_unique<scene::ContactScene<dim>>();
+    s->parse_parameters(prm, n_bodies);
+    s->set_quiet(true);
+    return s;
+  }
+
+  // The Hertz cylinder (quarter disc R = 40, 100 kN/mm on the half model)
+  // on a rigid plane, with m contact refinements.
+  std::string
+  hertz_prm(const unsigned int m, const double half_width, const double mu)
+  {
+    return "set Dimension = 2\n"
+           "subsection Body 1\n"
+           "  subsection Geometry\n"
+           "    set Type = quarter disc\n"
+           "    set Radius = 40\n"
+           "    set Centre = 0, 40\n"
+           "    set Global refinements = 2\n"
+           "    set Contact refinements = " +
+           std::to_string(m) +
+           "\n"
+           "    set Contact refinement radius = 14\n"
+           "  end\n"
+           "  subsection Boundary conditions\n"
+           "    set Symmetry = axis\n"
+           "  end\n"
+           "  subsection Loads\n"
+           "    set Concentrated forces = 0, 40: 0, -100000\n"
+           "  end\n"
+           "end\n"
+           "subsection Contact\n"
+           "  set Boundary 1 = curved\n"
+           "  set Candidate centre = 0, 0\n"
+           "  set Candidate half width = " +
+           std::to_string(half_width) +
+           "\n"
+           "  set Contact direction = 0, -1\n"
+           "  set Friction coefficient = " +
+           std::to_string(mu) +
+           "\n"
+           "end\n";
+  }
+} // namespace
+
+
+
+// A = V^T K^{-1} V must come out symmetric from the blocked solves before
+// it is symmetrised (relative 1e-12), and positive definite: two edges per
+// contact element satisfy the inf-sup condition, so the columns of V are
+// independent on the free unknowns.
+TEST(Condensation, ComplianceSymmetricPositiveDefinite)
+{
+  auto s = make_scene<2>(block_prm("set Fixed = top: x, y", "", ""));
+  s->setup_bodies();
+  s->setup_surfaces();
+  s->condense();
+  const auto &A = s->problem().A;
+  EXPECT_LT(s->condenser(0).asymmetry(), 1e-12);
+  EXPECT_EQ(A.rows(), 2 * 4);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  const double lmin = eig.eigenvalues().minCoeff();
+  const double lmax = eig.eigenvalues().maxCoeff();
+  std::cout << "A: " << A.rows() << " x " << A.cols() << ", eigenvalues in ["
+            << lmin << ", " << lmax << "], asymmetry "
+            << s->condenser(0).asymmetry() << std::endl;
+  EXPECT_GT(lmin, 1e-8 * lmax);
+}
+
+
+
+// Column j of A is the response on Gamma_c (the integrals of u . e_k over
+// each contact element) to a unit traction e_j on contact element j. Here
+// that response is computed independently: a fresh Body whose faces of
+// element j get their own boundary name, loaded by the Body's own traction
+// assembly and solved by the Body's own solve(); the integrals of u . e_k
+// over the straight edges are taken by the trapezoidal rule, exact for P1.
+TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
+{
+  const std::string text = block_prm("set Fixed = top: x, y", "", "");
+  auto              s    = make_scene<2>(text);
+  s->setup_bodies();
+  s->setup_surfaces();
+  s->condense();
+  const auto &A       = s->problem().A;
+  const auto &surface = s->surface(0);
+
+  for (const unsigned int j : {0u, 2u, 3u})
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        Body<2>                  body("Body 1");
+        dealii::ParameterHandler prm;
+        scene::declare_parameters(prm, 2, 1);
+        prm.parse_input_from_string(text);
+        prm.enter_subsection("Body 1");
+        body.parse_parameters(prm);
+        prm.leave_subsection();
+        body.create_mesh();
+
+        // Mark the faces of element j.
+        std::set<std::pair<long, long>> centres;
+        for (const unsigned int f : surface.element(j).faces)
+          {
+            const auto &c = surface.get_faces()[f].centroid;
+            centres.insert({std::lround(c[0] * 1e6), std::lround(c[1] * 1e6)});
+          }
+        for (const auto &face : body.triangulation().active_face_iterators())
+          if (face->at_boundary() &&
+              centres.count({std::lround(face->center()[0] * 1e6),
+                             std::lround(face->center()[1] * 1e6)}))
+            face->set_boundary_id(10);
+        auto names     = body.boundary_names();
+        names["patch"] = 10;
+        body.set_boundary_names(names);
+        const auto                 &e = surface.element(j);
+        typename Loads<2>::Traction t;
+        t.boundary  = "patch";
+        t.traction  = (k == 0 ? e.normal : e.tangents[0]);
+        t.parameter = "test";
+        body.loads().traction.push_back(t);
+        body.setup();
+        body.assemble();
+        body.solve();
+
+        const auto &u    = body.solution();
+        const auto &dofs = body.vertex_dofs();
+        for (unsigned int i = 0; i < surface.n_elements(); ++i)
+          for (unsigned int l = 0; l < 2; ++l)
+            {
+              const auto &ei       = surface.element(i);
+              const auto  dir      = (l == 0 ? ei.normal : ei.tangents[0]);
+              double      integral = 0;
+              for (const unsigned int f : ei.faces)
+                {
+                  const auto &F = surface.get_faces()[f];
+                  for (const unsigned int v : F.vertices)
+                    for (unsigned int c = 0; c < 2; ++c)
+                      integral += 0.5 * F.area * u[dofs[v][c]] * dir[c];
+                }
+              EXPECT_NEAR(A(2 * i + l, 2 * j + k),
+                          integral,
+                          1e-9 * A.cwiseAbs().maxCoeff())
+                << "element " << i << " component " << l << ", load on " << j
+                << " component " << k;
+            }
+      }
+}
+
+
+
+// The frictionless receding block (seed 000, section 4.2.1) has an exact
+// solution: the uniform stress sigma_xx = -100, sigma_yy = -50, sigma_xy = 0
+// MPa satisfies equilibrium, the loads on the top and lateral faces, the
+// symmetry condition (u_x = 0 on x = 0: the displacement of a uniform stress
+// state is linear, u_x proportional to x) and, on the base, frictionless
+// contact with a uniform vertical displacement (the free rigid translation
+// of the floating block). Its displacement is linear, so P1 elements
+// reproduce it exactly: every contact element must carry N = -50 MPa and
+// T = 0, up to round-off, on any mesh.
+TEST(ContactRun, FrictionlessRecedingBlockIsUniform)
+{
+  auto s = make_scene<2>(block_prm("set Symmetry = left",
+                                   "set Pressure = top: 50; right: 100",
+                                   "set Friction coefficient = 0",
+                                   16));
+  s->run(false);
+  ASSERT_TRUE(s->summary().result.converged);
+  for (unsigned int j = 0; j < s->summary().n_elements; ++j)
+    {
+      EXPECT_NEAR(s->normal_traction(j), -50.0, 50.0 * 1e-9);
+      EXPECT_NEAR(s->tangential_traction(j), 0.0, 50.0 * 1e-9);
+    }
+  // The fictitious support of the vertical translation carries no load:
+  // the equality row G r = e holds.
+  EXPECT_LT(s->summary().result.figures.equilibrium, 1e-8 * 2000.0);
+}
+
+
+
+// Hertz cylinder on a rigid foundation, mu = 0, on three meshes (contact
+// refinements 3, 4, 5: contact elements of 2 edges, about 2, 1, 0.5 mm).
+//
+// Reference: plane strain Hertz, a = sqrt(4 P k R), k = (1 - nu^2)/(pi E),
+// N_max = 2 P / (pi a) with P = 200 kN/mm, R = 40: a = 8.673 mm,
+// N_max = 14681 MPa. Hertz is the limit a << R of a half-space with a
+// parabolic profile; here a / R = 0.22 and the body is a finite disc loaded
+// at its centre line, so the converged FE values need not equal Hertz: the
+// seeds' own table 4.2 differs from Hertz by -8 % (a) and +1.5 % (N_max).
+// The test asserts: (1) N_max increases monotonically with refinement
+// (the piecewise constant traction resolves the peak better) and converges
+// (the last increment is below 1 % of the value); (2) the finest N_max is
+// within +-6 % of Hertz and a within +-10 %; (3) a of every mesh agrees
+// with the finest one within one contact element size (a is only known to
+// the size of the element that ends the contact zone).
+TEST(ContactRun, HertzRigidFoundationConvergence)
+{
+  const double P = 200000, R = 40, E = 130000, nu = 0.2;
+  const double k   = (1 - nu * nu) / (M_PI * E);
+  const double a_H = std::sqrt(4 * P * k * R), N_H = 2 * P / (M_PI * a_H);
+  std::vector<double> a, N, h;
+  for (const unsigned int m : {3u, 4u, 5u})
+    {
+      auto s = make_scene<2>(hertz_prm(m, 15, 0));
+      s->run(false);
+      ASSERT_TRUE(s->summary().result.converged);
+      a.push_back(s->summary().half_width);
+      N.push_back(s->summary().max_pressure);
+      double size = 0;
+      for (const auto &e : s->surface(0).get_elements())
+        if (e.s_min < a.back())
+          size = std::max(size, e.s_max - e.s_min);
+      h.push_back(size);
+      std::cout << "Hertz rigid, mu = 0, contact refinements " << m
+                << ": a = " << a.back() << " mm (element " << size
+                << " mm), N_max = " << N.back() << " MPa; Hertz a = " << a_H
+                << ", N_max = " << N_H << "; relative errors "
+                << (a.back() - a_H) / a_H << ", " << (N.back() - N_H) / N_H
+                << std::endl;
+    }
+  EXPECT_GT(N[1], N[0]);
+  EXPECT_GE(N[2], N[1]);
+  EXPECT_LT((N[2] - N[1]) / N[2], 0.01);
+  EXPECT_LT(std::abs(N[2] - N_H) / N_H, 0.06);
+  EXPECT_LT(std::abs(a[2] - a_H) / a_H, 0.10);
+  for (unsigned int i = 0; i < 2; ++i)
+    EXPECT_LE(std::abs(a[i] - a[2]), h[i] + 1e-12);
+}
+
+
+
+// The result must not depend on the candidate surface as long as it holds
+// every active constraint: the Hertz cylinder with mu = 1 and candidate
+// half widths 11 mm and 15 mm (contact zone about 8 mm) gives the same
+// tractions on the common elements, and zero on the extra ones.
+TEST(ContactRun, CandidateWidthIndependence)
+{
+  auto small = make_scene<2>(hertz_prm(4, 11, 1));
+  auto large = make_scene<2>(hertz_prm(4, 15, 1));
+  small->run(false);
+  large->run(false);
+  ASSERT_TRUE(small->summary().result.converged);
+  ASSERT_TRUE(large->summary().result.converged);
+  EXPECT_FALSE(small->summary().candidate_edge_warning);
+  const auto &S = small->surface(0), &L = large->surface(0);
+  ASSERT_LT(S.n_elements(), L.n_elements());
+  const double scale = large->summary().max_pressure;
+  // The grouping of the edges into pairs starts at the axis in both runs,
+  // so every element of the smaller surface, except possibly a last one
+  // cut by the smaller region, is an element of the larger one.
+  std::vector<bool> matched(L.n_elements(), false);
+  for (unsigned int i = 0; i < S.n_elements(); ++i)
+    {
+      bool found = false;
+      for (unsigned int j = 0; j < L.n_elements(); ++j)
+        if (L.element(j).centroid.distance(S.element(i).centroid) < 1e-9)
+          {
+            EXPECT_NEAR(large->normal_traction(j),
+                        small->normal_traction(i),
+                        1e-7 * scale);
+            EXPECT_NEAR(large->tangential_traction(j),
+                        small->tangential_traction(i),
+                        1e-7 * scale);
+            found = matched[j] = true;
+          }
+      if (!found)
+        EXPECT_EQ(small->normal_traction(i), 0.0) << "element " << i;
+      else if (small->normal_traction(i) < 0)
+        EXPECT_TRUE(found);
+    }
+  unsigned int n_matched = 0;
+  for (unsigned int j = 0; j < L.n_elements(); ++j)
+    if (matched[j])
+      ++n_matched;
+    else
+      EXPECT_NEAR(large->normal_traction(j), 0.0, 1e-10 * scale);
+  EXPECT_GE(n_matched + 1, S.n_elements());
+  std::cout << "Candidate half widths 11 and 15 mm: " << S.n_elements()
+            << " and " << L.n_elements() << " elements, " << n_matched
+            << " common; contact half width " << small->summary().half_width
+            << " and " << large->summary().half_width << " mm" << std::endl;
+}
+
+
+
+// A candidate surface restricted so that it cuts the contact zone must be
+// reported.
+TEST(ContactRun, CandidateEdgeWarning)
+{
+  auto s = make_scene<2>(hertz_prm(3, 5, 0));
+  s->run(false);
+  EXPECT_TRUE(s->summary().candidate_edge_warning);
+}
