@@ -4,7 +4,10 @@
 //
 // The dpana executable:
 //
-//   dpana FILE.prm                    run the scene of FILE.prm
+//   dpana FILE.prm                    run the scene of FILE.prm: a contact
+//                                     run if the file has a subsection
+//                                     Contact (doc/contact.md), otherwise
+//                                     an elastic run of one body
 //   dpana --print-parameters [FILE]   print the documented parameter file
 //                                     (defaults, or FILE's values completed
 //                                     with the defaults) and exit
@@ -12,11 +15,13 @@
 // Any error of the input (an unknown entry, a value out of range, a missing
 // mesh file, a boundary name no face carries, a body that is not held) is
 // reported as ONE line "dpana: error: ..." on stderr, with exit status 1,
-// and leaves no output directory behind.
+// and leaves no output directory behind. A contact run whose solver did not
+// converge exits with status 2 (unless Contact / Allow non-converged).
 
 #include <dpana/base/exceptions.h>
 #include <dpana/base/simulation.h>
 #include <dpana/parameters/parameters.h>
+#include <dpana/scene/contact_scene.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -92,6 +97,33 @@ main(int argc, char **argv)
         {
           usage(std::cerr);
           return 1;
+        }
+
+      // Contact runs have their own driver (bodies, condensation, contact
+      // solver, recovery, output) and their own parameter set.
+      if (!filename.empty() && dpana::scene::is_contact_file(filename))
+        {
+          if (!print_parameters)
+            return dpana::scene::run_contact(filename);
+          dealii::ParameterHandler prm;
+          const unsigned int dim = dpana::parameters::read_dimension(filename);
+          dealii::ParameterHandler pre;
+          pre.declare_entry("Dimension", "2");
+          pre.declare_entry("Number of bodies",
+                            "1",
+                            dealii::Patterns::Integer(1, 2));
+          pre.parse_input(filename, "", true);
+          dpana::scene::declare_parameters(prm,
+                                           dim,
+                                           pre.get_integer("Number of bodies"));
+          dpana::parameters::parse_file(prm, filename);
+          std::cout << "# dpana contact parameter file (Dimension = " << dim
+                    << "); units: mm, N, MPa\n";
+          prm.print_parameters(
+            std::cout,
+            dealii::ParameterHandler::PRM |
+              dealii::ParameterHandler::KeepDeclarationOrder);
+          return 0;
         }
 
       const unsigned int dim =

@@ -145,6 +145,14 @@ namespace dpana
                           "1000",
                           Integer(1),
                           "Maximum number of outer iterations.");
+        prm.declare_entry(
+          "Allow non-converged",
+          "false",
+          Bool(),
+          "If false (default), a run whose contact solver does not reach the "
+          "tolerance writes its output (marked \"converged\": false in "
+          "summary.json), says so, and exits with status 2. If true, it "
+          "exits with status 0.");
         prm.declare_entry("Columns per solve",
                           "256",
                           Integer(1),
@@ -234,7 +242,7 @@ namespace dpana
       }
 
       template <int dim>
-      void
+      int
       run(const std::string &prm_file, const unsigned int n_bodies)
       {
         dealii::ParameterHandler prm;
@@ -250,6 +258,21 @@ namespace dpana
         ContactScene<dim> scene;
         scene.parse_parameters(prm, n_bodies);
         scene.run(true);
+
+        // A run that did not converge has written its output, marked as
+        // such, but must not pass for a result: it exits non-zero unless
+        // the user accepted it explicitly.
+        const auto &result = scene.summary().result;
+        if (!result.converged && !scene.accepts_non_converged())
+          {
+            std::cerr << "dpana: error: the contact solver did not converge "
+                      << "(residual " << result.residual << " after "
+                      << result.iterations << " iterations: " << result.message
+                      << "); set Contact / Allow non-converged = true to "
+                      << "accept it" << std::endl;
+            return exit_not_converged;
+          }
+        return 0;
       }
     } // namespace
 
@@ -281,11 +304,8 @@ namespace dpana
             }
           const unsigned int dim      = pre.get_integer("Dimension");
           const unsigned int n_bodies = pre.get_integer("Number of bodies");
-          if (dim == 2)
-            run<2>(prm_file, n_bodies);
-          else
-            run<3>(prm_file, n_bodies);
-          return 0;
+          return dim == 2 ? run<2>(prm_file, n_bodies) :
+                            run<3>(prm_file, n_bodies);
         }
       catch (const InputError &e)
         {

@@ -56,6 +56,12 @@ namespace dpana
     run_contact(const std::string &prm_file);
 
     /**
+     * Exit status of a run whose contact solver did not converge (and
+     * `Contact / Allow non-converged` is false).
+     */
+    constexpr int exit_not_converged = 2;
+
+    /**
      * The values a run produces, for the log, the JSON summary and tests.
      */
     struct Zone
@@ -126,6 +132,13 @@ namespace dpana
       {
         return summary_;
       }
+
+      // True if `Contact / Allow non-converged` is set.
+      bool
+      accepts_non_converged() const
+      {
+        return allow_non_converged;
+      }
       const contact::ContactProblem &
       problem() const
       {
@@ -192,7 +205,8 @@ namespace dpana
       contact::ConeModel       cone          = contact::ConeModel::disc;
       unsigned int             polygon_sides = 16;
       contact::SolverOptions   solver_options;
-      unsigned int             columns_per_pass = 256;
+      unsigned int             columns_per_pass    = 256;
+      bool                     allow_non_converged = false;
 
       // Reference values.
       std::string reference_type          = "none";

@@ -125,6 +125,7 @@ namespace dpana
       solver_options.tolerance      = prm.get_double("Tolerance");
       solver_options.max_iterations = prm.get_integer("Maximum iterations");
       columns_per_pass              = prm.get_integer("Columns per solve");
+      allow_non_converged           = prm.get_bool("Allow non-converged");
 
       prm.enter_subsection("Reference");
       reference_type          = prm.get("Type");
