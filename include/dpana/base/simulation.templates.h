@@ -66,6 +66,8 @@ namespace dpana
     prm.enter_subsection("Linear solver");
     block_size = prm.get_integer("Block size");
     prm.leave_subsection();
+    for (auto &body : bodies_)
+      body->set_solver_block_size(block_size);
   }
 
 

@@ -214,6 +214,13 @@ namespace dpana
     factorization() const;
 
     /**
+     * Number of right-hand sides per CHOLMOD call in blocked solves with
+     * the factorisation (parameter "Linear solver / Block size").
+     */
+    void
+    set_solver_block_size(const unsigned int block_size);
+
+    /**
      * The degrees of freedom of every vertex of the mesh: dofs[v][c] is the
      * c-th displacement component at vertex v (invalid for unused vertices).
      */
@@ -267,11 +274,11 @@ namespace dpana
 
     /**
      * For every named boundary that carries a kinematic condition, the
-     * resultant of the support forces r = K u - f on the nodal values its
-     * condition constrains (N, or N/mm in 2D). A value constrained by two
-     * conditions (at a corner) belongs to the first one applied (prescribed
-     * displacements, then fixed components, then symmetry planes), so the
-     * reactions of all boundaries add up to minus applied_load_resultant().
+     * resultant of its support forces (N, or N/mm in 2D), from the nodal
+     * residual r = K u - f of the supported vertices, split at a vertex
+     * with several conditions along their directions (see postprocess()).
+     * The reactions of all boundaries add up to minus
+     * applied_load_resultant().
      */
     const std::map<std::string, dealii::Tensor<1, dim>> &
     reactions() const;
@@ -321,8 +328,11 @@ namespace dpana
     std::vector<double>                           stress_zz;
     std::vector<double>                           von_mises;
     std::map<std::string, dealii::Tensor<1, dim>> reaction;
-    std::map<std::string, std::vector<dealii::types::global_dof_index>>
-                              constrained_by;
+    // For every supported vertex, the conditions acting there: (boundary,
+    // direction of the support force).
+    std::map<unsigned int,
+             std::vector<std::pair<std::string, dealii::Tensor<1, dim>>>>
+                              support_directions;
     std::vector<unsigned int> component_of_dof;
     dealii::Tensor<1, dim>    applied_resultant;
 

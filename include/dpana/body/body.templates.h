@@ -306,7 +306,7 @@ namespace dpana
   Body<dim>::make_constraints()
   {
     constraints_.clear();
-    constrained_by.clear();
+    support_directions.clear();
 
     for (const auto &p : bcs.prescribed)
       {
@@ -321,7 +321,9 @@ namespace dpana
                 !constraints_.is_constrained(dofs_of_vertex[v][c]))
               {
                 constraints_.add_line(dofs_of_vertex[v][c]);
-                constrained_by[p.boundary].push_back(dofs_of_vertex[v][c]);
+                dealii::Tensor<1, dim> e;
+                e[c] = 1.0;
+                support_directions[v].emplace_back(p.boundary, e);
                 constraints_.set_inhomogeneity(
                   dofs_of_vertex[v][c],
                   p.displacement->value(tria.get_vertices()[v], c));
@@ -337,15 +339,25 @@ namespace dpana
                 !constraints_.is_constrained(dofs_of_vertex[v][c]))
               {
                 constraints_.add_line(dofs_of_vertex[v][c]);
-                constrained_by[f.boundary].push_back(dofs_of_vertex[v][c]);
+                dealii::Tensor<1, dim> e;
+                e[c] = 1.0;
+                support_directions[v].emplace_back(f.boundary, e);
               }
       }
 
     // Symmetry: the normal n of a flat boundary is computed from its faces
     // and checked to be the same on all of them (up to sign). Then u . n = 0
-    // is imposed at every vertex: for a boundary normal to the axis k simply
-    // u_k = 0, otherwise u_k = -sum_{j != k} (n_j / n_k) u_j with k the
-    // component of largest |n_k|.
+    // is imposed at every vertex of the boundary. A vertex may lie on
+    // several symmetry planes (a corner), so the conditions are collected
+    // per vertex first and solved there by Gauss-Jordan elimination: each
+    // independent condition eliminates one component p that no other
+    // condition has constrained (the one of largest coefficient),
+    //   u_p = -sum_{j not eliminated} r_j u_j,
+    // which for a plane normal to an axis is simply u_p = 0, and never ties
+    // two components to each other in a cycle.
+    std::map<unsigned int,
+             std::vector<std::pair<std::string, dealii::Tensor<1, dim>>>>
+      planes_at_vertex;
     for (const auto &s : bcs.symmetry)
       {
         const auto             id = resolve(s.boundary, s.parameter);
@@ -371,29 +383,59 @@ namespace dpana
                                  "' is not flat (a symmetry condition "
                                  "needs a plane)");
             }
-        unsigned int k = 0;
-        for (unsigned int d = 1; d < dim; ++d)
-          if (std::abs(normal[d]) > std::abs(normal[k]))
-            k = d;
-        const bool axis_aligned = std::abs(normal[k]) > 1.0 - 1e-12;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (std::abs(normal[d]) > 1.0 - 1e-12)
+            {
+              normal    = dealii::Tensor<1, dim>();
+              normal[d] = 1.0;
+            }
         for (const unsigned int v : boundary_vertices(id))
+          planes_at_vertex[v].emplace_back(s.boundary, normal);
+      }
+
+    for (const auto &[v, planes] : planes_at_vertex)
+      {
+        const auto &dofs = dofs_of_vertex[v];
+        std::vector<std::pair<std::string, dealii::Tensor<1, dim>>> rows;
+        std::vector<unsigned int>                                   pivots;
+        std::array<bool, dim> eliminated{};
+        for (const auto &[boundary, n] : planes)
           {
-            const auto &dofs = dofs_of_vertex[v];
-            if (constraints_.is_constrained(dofs[k]))
+            dealii::Tensor<1, dim> r = n;
+            for (unsigned int i = 0; i < rows.size(); ++i)
+              r -= r[pivots[i]] * rows[i].second;
+            unsigned int p    = dealii::numbers::invalid_unsigned_int;
+            double       best = 1e-8;
+            for (unsigned int c = 0; c < dim; ++c)
+              if (!eliminated[c] && !constraints_.is_constrained(dofs[c]) &&
+                  std::abs(r[c]) > best)
+                {
+                  best = std::abs(r[c]);
+                  p    = c;
+                }
+            // Nothing left to eliminate: the condition is implied by those
+            // already imposed at this vertex.
+            if (p == dealii::numbers::invalid_unsigned_int)
               continue;
-            constraints_.add_line(dofs[k]);
-            constrained_by[s.boundary].push_back(dofs[k]);
-            if (!axis_aligned)
-              for (unsigned int j = 0; j < dim; ++j)
-                if (j != k && normal[j] != 0.0)
-                  {
-                    constraints_.add_entry(dofs[k],
-                                           dofs[j],
-                                           -normal[j] / normal[k]);
-                    // The support force of an inclined plane has all
-                    // components: r_j = -a_j r_k at the free values.
-                    constrained_by[s.boundary].push_back(dofs[j]);
-                  }
+            r /= r[p];
+            for (auto &row : rows)
+              row.second -= row.second[p] * r;
+            rows.emplace_back(boundary, r);
+            support_directions[v].emplace_back(boundary, n);
+            pivots.push_back(p);
+            eliminated[p] = true;
+          }
+        for (unsigned int i = 0; i < rows.size(); ++i)
+          {
+            const unsigned int p        = pivots[i];
+            const auto        &boundary = rows[i].first;
+            const auto        &r        = rows[i].second;
+            constraints_.add_line(dofs[p]);
+            for (unsigned int c = 0; c < dim; ++c)
+              if (!eliminated[c] && std::abs(r[c]) > 1e-14)
+                {
+                  constraints_.add_entry(dofs[p], dofs[c], -r[c]);
+                }
           }
       }
 
@@ -835,20 +877,28 @@ namespace dpana
             break;
           }
 
-    // The reaction of a boundary: the sum of r over the values its
-    // condition constrains (a value constrained by an earlier condition
-    // belongs to that one, so that the reactions add up to minus the load
-    // resultant).
+    // The reactions: at a supported vertex the nodal residual r_v is the
+    // sum of the support forces of the conditions acting there, each along
+    // its own direction d_i (e_c for a fixed or prescribed component, the
+    // normal for a symmetry plane): r_v = sum_i lambda_i d_i. Solving this
+    // small system per vertex splits corner forces correctly between the
+    // boundaries, and the reactions add up to minus the load resultant.
     reaction.clear();
-    for (const auto &[boundary, dofs] : constrained_by)
+    for (const auto &[boundary, parameter] : bcs.used_boundaries())
+      reaction[boundary] = dealii::Tensor<1, dim>();
+    for (const auto &[v, directions] : support_directions)
       {
-        dealii::Tensor<1, dim> R;
-        for (const auto dof : dofs)
+        Eigen::MatrixXd D(dim, directions.size());
+        Eigen::VectorXd r(dim);
+        for (unsigned int c = 0; c < dim; ++c)
           {
-            const unsigned int c = component_of_dof[dof];
-            R[c] += residual[dof];
+            r(c) = residual[dofs_of_vertex[v][c]];
+            for (unsigned int i = 0; i < directions.size(); ++i)
+              D(c, i) = directions[i].second[c];
           }
-        reaction[boundary] = R;
+        const Eigen::VectorXd lambda = D.colPivHouseholderQr().solve(r);
+        for (unsigned int i = 0; i < directions.size(); ++i)
+          reaction[directions[i].first] += lambda(i) * directions[i].second;
       }
   }
 
@@ -910,6 +960,13 @@ namespace dpana
   Body<dim>::factorization() const
   {
     return cholesky;
+  }
+
+  template <int dim>
+  void
+  Body<dim>::set_solver_block_size(const unsigned int block_size)
+  {
+    cholesky.set_block_size(block_size);
   }
 
   template <int dim>

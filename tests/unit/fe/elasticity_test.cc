@@ -430,3 +430,46 @@ TEST(Elasticity, PatchTestTractions3D)
 {
   patch_test_tractions<3>();
 }
+
+
+
+// Symmetry on inclined planes (the general-normal branch: u_k tied to the
+// other components): the traction patch test of above on the square rotated
+// by 30 degrees. The exact stress is the rotated uniform stress
+// Q diag(s_1, s_2) Q^T, the reactions of the two inclined symmetry planes
+// are minus the loads on the opposite faces.
+TEST(Elasticity, PatchTestInclinedSymmetry2D)
+{
+  dpana::Body<2> body("Patch");
+  const auto     names = make_irregular_brick(body.triangulation());
+  const double   angle = numbers::PI / 6.0;
+  GridTools::rotate(angle, body.triangulation());
+  body.set_boundary_names(names);
+  body.material() = dpana::Material(130000., 0.2);
+
+  const double s1 = 30.0, s2 = -50.0;
+  body.boundary_conditions().symmetry = {{"left", "test"}, {"bottom", "test"}};
+  // Outward normals of the rotated right and top faces.
+  const Tensor<1, 2> n_right({std::cos(angle), std::sin(angle)});
+  const Tensor<1, 2> n_top({-std::sin(angle), std::cos(angle)});
+  body.loads().traction.push_back({"right", s1 * n_right, "test"});
+  body.loads().pressure.push_back({"top", -s2, "test"});
+  body.setup();
+  EXPECT_TRUE(body.free_rigid_modes().empty());
+  body.assemble();
+  body.solve();
+  body.postprocess();
+
+  const SymmetricTensor<2, 2> exact_stress =
+    s1 * symmetrize(outer_product(n_right, n_right)) +
+    s2 * symmetrize(outer_product(n_top, n_top));
+  const double error = max_stress_error(body, exact_stress);
+  std::printf("  2D patch test (inclined symmetry planes): max relative "
+              "stress error %.3e\n",
+              error);
+  EXPECT_LT(error, 1e-10);
+  const Tensor<1, 2> R_left   = body.reactions().at("left");
+  const Tensor<1, 2> R_bottom = body.reactions().at("bottom");
+  EXPECT_LT((R_left + s1 * n_right).norm(), 1e-9 * std::abs(s1));
+  EXPECT_LT((R_bottom + s2 * n_top).norm(), 1e-9 * std::abs(s2));
+}
