@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Builds the condensation benchmark (Release, target condensation_benchmark,
+# in build/ of the repository or $DPANA_BUILD_DIR), runs it and plots the
+# result.
+#   ./benchmarks/condensation/run.sh                 default sizes (< 3 min)
+#   ./benchmarks/condensation/run.sh --quick         a few seconds
+#   ./benchmarks/condensation/run.sh --full          larger meshes (minutes)
+#   ./benchmarks/condensation/run.sh --out DIR ...   results into DIR
+# Other arguments are passed to the executable (e.g. --single-columns N).
+# Output: results.csv, results.txt and condensation.png in
+# benchmarks/condensation/results/ (or DIR), printed at the end.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+top="$(cd "$here/../.." && pwd)"
+build="${DPANA_BUILD_DIR:-$top/build}"
+
+out="$here/results"
+args=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --out)
+      if [ $# -lt 2 ]; then
+        echo "run.sh: error: --out needs a directory" >&2
+        exit 1
+      fi
+      out="$2"
+      shift 2
+      ;;
+    *)
+      args+=("$1")
+      shift
+      ;;
+  esac
+done
+
+cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$build" -j "${DPANA_JOBS:-2}" --target condensation_benchmark
+
+mkdir -p "$out"
+"$build/benchmarks/condensation_benchmark" --csv "$out/results.csv" \
+  ${args[@]+"${args[@]}"} | tee "$out/results.txt"
+
+# matplotlib comes from Debian (python3-matplotlib): use the system
+# interpreter explicitly (another python3 first on the PATH may lack it),
+# unless PYTHON is set.
+python="${PYTHON:-/usr/bin/python3}"
+if ! "$python" -c "import matplotlib" 2> /dev/null; then
+  echo "run.sh: error: $python cannot import matplotlib (set PYTHON)" >&2
+  exit 1
+fi
+"$python" "$here/plot.py" "$out/results.csv" "$out/condensation.png"
+echo "results in $out"
