@@ -44,7 +44,8 @@ if [ ${#missing[@]} -gt 0 ]; then
     fi
   fi
   "${sudo_cmd[@]}" apt-get update
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive \
+    apt-get install -y --no-install-recommends "${missing[@]}"
 fi
 
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then

@@ -11,7 +11,8 @@ here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 build="${DPANA_BUILD_DIR:-$top/build}"
 
-cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+# The project's set-up: installs what is missing, configures and builds.
+DPANA_BUILD_DIR="$build" "$top/scripts/setup.sh"
 targets="$(cmake --build "$build" --target help)"
 if ! grep -q "solver_vs_siconos" <<< "$targets"; then
   echo "run.sh: error: Siconos numerics was not found by CMake" \

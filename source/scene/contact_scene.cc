@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
+#include <dpana/parameters/parameters.h>
 #include <dpana/scene/contact_scene.templates.h>
 
 #include <deal.II/base/patterns.h>
@@ -221,40 +222,13 @@ namespace dpana
 
     namespace
     {
-      // The first line of a deal.II exception text that says what is wrong.
-      std::string
-      first_line(const std::string &what)
-      {
-        std::istringstream in(what);
-        std::string        line, best;
-        while (std::getline(in, line))
-          {
-            line = dealii::Utilities::trim(line);
-            if (line.rfind("The violated condition", 0) == 0 ||
-                line.rfind("An error occurred", 0) == 0 ||
-                line.rfind("Additional information", 0) == 0 ||
-                line.rfind("---", 0) == 0 || line.empty())
-              continue;
-            if (best.empty())
-              best = line;
-          }
-        return best;
-      }
-
       template <int dim>
       int
       run(const std::string &prm_file, const unsigned int n_bodies)
       {
         dealii::ParameterHandler prm;
         declare_parameters(prm, dim, n_bodies);
-        try
-          {
-            prm.parse_input(prm_file);
-          }
-        catch (const std::exception &e)
-          {
-            throw InputError(prm_file + ": " + first_line(e.what()));
-          }
+        parameters::parse_file(prm, prm_file);
         ContactScene<dim> scene;
         scene.parse_parameters(prm, n_bodies);
         scene.run(true);
@@ -299,7 +273,8 @@ namespace dpana
             }
           catch (const std::exception &e)
             {
-              throw InputError(prm_file + ": " + first_line(e.what()) +
+              throw InputError(prm_file + ": " +
+                               parameters::one_line_message(e) +
                                " (parameters Dimension, Number of bodies)");
             }
           const unsigned int dim      = pre.get_integer("Dimension");

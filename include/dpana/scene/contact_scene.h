@@ -13,6 +13,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -214,6 +215,8 @@ namespace dpana
       double      hertz_load = 0, radius_1 = 0, radius_2 = 0;
       double      seed_half_width = 0, seed_max_pressure = 0;
       std::string reference_csv;
+      // Rows (s, N, T) of the comparison file, sorted by s; empty if none.
+      std::vector<std::array<double, 3>> reference_table;
 
       // Output.
       std::string output_directory = "output";
@@ -234,6 +237,8 @@ namespace dpana
       write_csv(const std::string &file) const;
       void
       write_json() const;
+      void
+      load_reference_table();
     };
   } // namespace scene
 } // namespace dpana

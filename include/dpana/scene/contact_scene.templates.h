@@ -7,6 +7,7 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/contact/friction_set.h>
 #include <dpana/contact/residual.h>
+#include <dpana/output/output.templates.h>
 #include <dpana/scene/contact_scene.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -108,6 +109,8 @@ namespace dpana
       faces_per_element = prm.get_integer("Faces per contact element");
       direction = internal::parse_vector<dim>(prm.get("Contact direction"),
                                               "Contact direction");
+      const bool direction_given =
+        !dealii::Utilities::trim(prm.get("Contact direction")).empty();
       obstacle_point_given =
         !dealii::Utilities::trim(prm.get("Obstacle point")).empty();
       obstacle_point = dealii::Point<dim>(
@@ -150,9 +153,79 @@ namespace dpana
       if (reference_type == "hertz" && radius_2 < 0 && -radius_2 <= radius_1)
         throw InputError("Contact / Reference / Radius 2: a cavity radius "
                          "must exceed Radius 1");
+      if (solver_options.tolerance <= 0)
+        throw InputError("Contact / Tolerance: must be positive");
+      if (direction_given && direction.norm() == 0)
+        throw InputError("Contact / Contact direction: must not be the zero "
+                         "vector (leave it empty for the element normals)");
+      load_reference_table();
+
       std::ostringstream text;
       prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
       parameters_text = text.str();
+    }
+
+
+
+    // The comparison file (a contact.csv of another run, e.g. the 2D plane
+    // solution of the 3D block) is read and checked before anything is
+    // computed, so that a bad file stops the run before any output exists.
+    // A file that does not exist yet (its scene has not been run) only
+    // disables the comparison, with a warning that says which file.
+    template <int dim>
+    void
+    ContactScene<dim>::load_reference_table()
+    {
+      reference_table.clear();
+      if (reference_csv.empty())
+        return;
+      const std::string what =
+        "Contact / Reference / Comparison file '" + reference_csv + "'";
+      std::ifstream in(reference_csv);
+      if (!in)
+        {
+          std::cerr << "dpana: warning: " << what
+                    << " not found (run the scene that writes it first); "
+                       "no comparison is printed"
+                    << std::endl;
+          return;
+        }
+      std::string line;
+      std::getline(in, line);
+      const auto header = dealii::Utilities::split_string_list(line);
+      int        cs = -1, cN = -1, cT = -1;
+      for (unsigned int c = 0; c < header.size(); ++c)
+        {
+          if (header[c] == "s")
+            cs = c;
+          if (header[c] == "N")
+            cN = c;
+          if (header[c] == "T" || header[c] == "T1")
+            cT = c;
+        }
+      if (cs < 0 || cN < 0 || cT < 0)
+        throw InputError(what + " has no columns s, N, T");
+      unsigned int line_number = 1;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          const auto v = dealii::Utilities::split_string_list(line);
+          if (v.size() < header.size())
+            continue;
+          try
+            {
+              reference_table.push_back(
+                {std::stod(v[cs]), std::stod(v[cN]), std::stod(v[cT])});
+            }
+          catch (const std::exception &)
+            {
+              throw InputError(what + ": line " + std::to_string(line_number) +
+                               " is not numeric");
+            }
+        }
+      if (reference_table.size() < 2)
+        throw InputError(what + " has fewer than two rows");
+      std::sort(reference_table.begin(), reference_table.end());
     }
 
 
@@ -515,9 +588,14 @@ namespace dpana
           //   a = sqrt(4 P (k1 + k2) R), k_i = (1 - nu_i^2) / (pi E_i),
           //   1/R = 1/R1 + 1/R2 (R2 = 0: flat; R2 < 0: cavity of radius |R2|,
           //   R = R1 |R2| / (|R2| - R1)), N_max = 2 P / (pi a).
+          // In plane stress the factor 1 - nu^2 drops: k_i = 1 / (pi E_i).
           const auto k = [](const Material &m) {
-            return (1 - m.poissons_ratio() * m.poissons_ratio()) /
-                   (M_PI * m.youngs_modulus());
+            const double nu2 =
+              m.plane_state() == Material::PlaneState::plane_stress &&
+                  dim == 2 ?
+                0. :
+                m.poissons_ratio() * m.poissons_ratio();
+            return (1 - nu2) / (M_PI * m.youngs_modulus());
           };
           const double k1 = k(bodies[0]->material());
           const double k2 = bodies.size() > 1 ? k(bodies[1]->material()) : 0;
@@ -541,44 +619,14 @@ namespace dpana
                 << rel(summary_.max_pressure, seed_max_pressure)
                 << std::noshowpos << std::endl;
         }
-      if (!reference_csv.empty())
+      if (!reference_table.empty())
         {
           // A CSV of another run (e.g. the 2D plane solution): N and T
           // interpolated linearly in s at the centroids of this run's
           // elements (in 3D those of the first row, t minimal: the
           // symmetry plane).
-          std::ifstream in(reference_csv);
-          if (!in)
-            throw InputError("Contact / Reference / Comparison file: cannot "
-                             "open '" +
-                             reference_csv + "'");
-          std::string line;
-          std::getline(in, line);
-          const auto header = dealii::Utilities::split_string_list(line);
-          int        cs = -1, cN = -1, cT = -1;
-          for (unsigned int c = 0; c < header.size(); ++c)
-            {
-              if (header[c] == "s")
-                cs = c;
-              if (header[c] == "N")
-                cN = c;
-              if (header[c] == "T" || header[c] == "T1")
-                cT = c;
-            }
-          if (cs < 0 || cN < 0 || cT < 0)
-            throw InputError("Contact / Reference / Comparison file: '" +
-                             reference_csv + "' has no columns s, N, T");
-          std::vector<std::array<double, 3>> ref;
-          while (std::getline(in, line))
-            {
-              const auto v = dealii::Utilities::split_string_list(line);
-              if (v.size() < header.size())
-                continue;
-              ref.push_back(
-                {std::stod(v[cs]), std::stod(v[cN]), std::stod(v[cT])});
-            }
-          std::sort(ref.begin(), ref.end());
-          const auto interp = [&](const double s, const unsigned int c) {
+          const auto &ref    = reference_table;
+          const auto  interp = [&](const double s, const unsigned int c) {
             if (s <= ref.front()[0])
               return ref.front()[c];
             if (s >= ref.back()[0])
@@ -837,7 +885,7 @@ namespace dpana
           << ", \"cone_violation\": " << res.figures.cone_violation
           << ", \"complementarity\": " << res.figures.complementarity
           << ", \"equilibrium\": " << res.figures.equilibrium
-          << "},\n  \"message\": \"" << res.message
+          << "},\n  \"message\": \"" << output::internal::escape(res.message)
           << "\",\n  \"asymmetry_of_A\": " << summary_.asymmetry
           << ",\n  \"contact_half_width\": " << summary_.half_width
           << ",\n  \"contact_half_width_centroid\": "
