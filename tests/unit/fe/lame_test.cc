@@ -113,7 +113,9 @@ TEST(Lame, ThickCylinderInternalPressurePlaneStrain)
       EXPECT_LT(e_r, tolerance) << "refinement " << level;
       EXPECT_LT(e_t, tolerance) << "refinement " << level;
       if (level > 1)
-        EXPECT_GT(previous / e_r, 3.0) << "refinement " << level;
+        {
+          EXPECT_GT(previous / e_r, 3.0) << "refinement " << level;
+        }
       previous = e_r;
       tolerance /= 4.0;
     }
