@@ -4,6 +4,10 @@
 #   ./benchmarks/solver_vs_siconos/run.sh            default sizes (< 2 min)
 #   ./benchmarks/solver_vs_siconos/run.sh --quick    a few seconds
 #   ./benchmarks/solver_vs_siconos/run.sh --full     larger problems (minutes)
+# First the FE scenes of scenes/*.prm are run with the built dpana (in the
+# output directory, under fe_scenes/); each writes its condensed contact
+# problem to fe_scenes/<scene>/problem.hdf5 (FCLIB), and these files are
+# added to the benchmarked problems with --fclib.
 # Output: results.csv, results.txt and solver_vs_siconos.png in
 # $DPANA_BUILD_DIR/benchmarks/solver_vs_siconos_results/ (printed at the end).
 set -euo pipefail
@@ -19,12 +23,27 @@ if ! grep -q "solver_vs_siconos" <<< "$targets"; then
        "(install libsiconos-numerics-dev); the benchmark needs it" >&2
   exit 1
 fi
-cmake --build "$build" -j "${DPANA_JOBS:-2}" --target solver_vs_siconos
+cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana solver_vs_siconos
 
 out="$build/benchmarks/solver_vs_siconos_results"
 mkdir -p "$out"
+
+# The FE scenes: condensed problems of real contact runs.
+fclib=()
+for prm in "$here"/scenes/*.prm; do
+  name="$(basename "$prm" .prm)"
+  echo "run.sh: running the scene $name"
+  (cd "$out" && "$build/dpana" "$prm" > "$out/scene_$name.log")
+  file="$out/fe_scenes/$name/problem.hdf5"
+  if [ ! -f "$file" ]; then
+    echo "run.sh: error: the scene $name wrote no $file" >&2
+    exit 1
+  fi
+  fclib+=("$file")
+done
+
 "$build/benchmarks/solver_vs_siconos" --csv "$out/results.csv" "$@" \
-  | tee "$out/results.txt"
+  --fclib "${fclib[@]}" | tee "$out/results.txt"
 
 # matplotlib comes from Debian (python3-matplotlib): prefer the system
 # interpreter, which sees it, over any other python3 on the PATH.

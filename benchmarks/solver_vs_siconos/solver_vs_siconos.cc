@@ -8,7 +8,18 @@
 //               (tests/unit/contact/siconos_problems.h);
 //   - indenter: the compliance of an elastic half-plane / half-space
 //               (half_space.h) under a rigid parabolic punch pushed in and
-//               sideways: FE-like matrices, ill-conditioned as real ones.
+//               sideways: FE-like matrices, ill-conditioned as real ones;
+//   - FE scenes: FCLIB local problems (--fclib), e.g. the condensed problems
+//               that dpana's contact scenes write with `Write FCLIB = true`
+//               (run.sh makes three). A body held by contact alone has an
+//               equality row G r = e (its free rigid translation), which a
+//               Siconos FrictionContactProblem cannot express: such a
+//               problem is benchmarked with the rigid mode fixed at its
+//               equilibrium amplitude alpha* (a support at the converged
+//               position), u = A r + (D + G^T alpha*). Its solution r is
+//               the solution of the floating problem, and G r = e holds
+//               there; alpha* comes from one accurate dpana solve
+//               (tolerance 1e-12) that is not timed.
 // Solvers:
 //   - dpana: every SolverType that solve() accepts, with tolerance = target;
 //   - Siconos: 2D NSGS and Lemke; 3D NSGS, PFP (Panagiotopoulos fixed
@@ -20,13 +31,19 @@
 // Output: a table on stdout and a CSV file (--csv, default results.csv).
 //
 // Usage: solver_vs_siconos [--quick | --full] [--target 1e-8] [--csv FILE]
+//                          [--fclib FILE [FILE...]]
+#include <dpana/base/exceptions.h>
 #include <dpana/contact/residual.h>
 #include <dpana/contact/solver.h>
+#include <dpana/io/fclib.h>
+
+#include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -250,21 +267,67 @@ namespace
     return cases;
   }
 
+  // The label of an FCLIB file: its name without extension, or the name of
+  // its directory if the file is a scene's `problem.hdf5`.
+  std::string
+  fclib_label(const std::string &file)
+  {
+    const std::filesystem::path path(file);
+    std::string                 label = path.stem().string();
+    if (label == "problem" && path.has_parent_path())
+      label = path.parent_path().filename().string();
+    return label;
+  }
+
+  // A case from an FCLIB file. A problem with equality rows G r = e (a body
+  // held by contact alone) is turned into the supported problem with the
+  // rigid mode fixed at its equilibrium amplitude (see the head of this
+  // file).
+  Case
+  fclib_case(const std::string &file)
+  {
+    Case c{fclib_label(file), dpana::io::read_fclib_local(file)};
+    if (c.problem.n_equalities() != 0)
+      {
+        dpana::contact::SolverOptions options;
+        options.tolerance         = 1e-12;
+        options.max_iterations    = 10000;
+        const SolverResult result = solve(c.problem, options);
+        if (!result.converged)
+          throw dpana::InputError(file +
+                                  ": the rigid mode amplitude could "
+                                  "not be found (dpana's solver did "
+                                  "not converge: " +
+                                  result.message + ")");
+        c.problem.D += c.problem.G.transpose() * result.alpha;
+        c.problem.G.resize(0, c.problem.A.cols());
+        c.problem.e.resize(0);
+        c.name += "*";
+      }
+    return c;
+  }
+
   void
   print_usage()
   {
     std::cout
       << "usage: solver_vs_siconos [--quick | --full] [--target TOL] [--csv "
-         "FILE]\n";
+         "FILE] [--fclib FILE [FILE...]]\n"
+      << "  --fclib: add the FCLIB local problems of the files (repeatable);\n"
+      << "           a name with * had its rigid mode fixed at equilibrium\n";
   }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
-  Level       level  = Level::standard;
-  double      target = 1e-8;
-  std::string csv    = "results.csv";
+  // dpana_fe (the FCLIB reader) is a deal.II library: MPI is initialised
+  // once for the whole run, serial.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::vector<std::string>                 fclib_files;
+  Level                                    level  = Level::standard;
+  double                                   target = 1e-8;
+  std::string                              csv    = "results.csv";
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -286,6 +349,18 @@ main(int argc, char **argv)
         }
       else if (arg == "--csv" && i + 1 < argc)
         csv = argv[++i];
+      else if (arg == "--fclib")
+        {
+          const int first = i + 1;
+          while (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0)
+            fclib_files.emplace_back(argv[++i]);
+          if (i + 1 == first)
+            {
+              std::cerr << "solver_vs_siconos: error: --fclib needs at least "
+                           "one FILE\n";
+              return 1;
+            }
+        }
       else if (arg == "--help" || arg == "-h")
         {
           print_usage();
@@ -313,7 +388,20 @@ main(int argc, char **argv)
   const auto               start_all = std::chrono::steady_clock::now();
   std::vector<Row>         rows;
   std::vector<std::string> states;
-  for (const Case &c : make_cases(level))
+  std::vector<Case>        cases = make_cases(level);
+  for (const std::string &file : fclib_files)
+    {
+      try
+        {
+          cases.push_back(fclib_case(file));
+        }
+      catch (const std::exception &e)
+        {
+          std::cerr << "solver_vs_siconos: error: " << e.what() << "\n";
+          return 1;
+        }
+    }
+  for (const Case &c : cases)
     {
       const unsigned int dim = c.problem.dim, n = c.problem.n_elements();
       const double       mu = c.problem.mu[0];
@@ -384,7 +472,7 @@ main(int argc, char **argv)
     }
 
   // The table.
-  std::cout << std::left << std::setw(11) << "problem" << std::right
+  std::cout << std::left << std::setw(18) << "problem" << std::right
             << std::setw(3) << "d" << std::setw(5) << "n" << std::setw(5)
             << "mu"
             << "  " << std::left << std::setw(29) << "solver" << std::right
@@ -394,7 +482,7 @@ main(int argc, char **argv)
             << "  note\n";
   for (const Row &r : rows)
     {
-      std::cout << std::left << std::setw(11) << r.problem << std::right
+      std::cout << std::left << std::setw(18) << r.problem << std::right
                 << std::setw(3) << r.dim << std::setw(5) << r.n << std::setw(5)
                 << std::setprecision(2) << r.mu << "  " << std::left
                 << std::setw(29) << r.solver << std::right << std::setw(10)

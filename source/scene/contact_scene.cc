@@ -212,6 +212,13 @@ namespace dpana
                             "true",
                             Bool(),
                             "Write contact.png with scripts/plot_contact.py.");
+          prm.declare_entry("Write FCLIB",
+                            "false",
+                            Bool(),
+                            "Write the condensed contact problem to "
+                            "problem.hdf5 in the output directory, as an "
+                            "FCLIB local problem (HDF5) for other contact "
+                            "solvers.");
         }
         prm.leave_subsection();
       }
@@ -231,6 +238,7 @@ namespace dpana
         parameters::parse_file(prm, prm_file);
         ContactScene<dim> scene;
         scene.parse_parameters(prm, n_bodies);
+        scene.set_scene_file(prm_file);
         scene.run(true);
 
         // A run that did not converge has written its output, marked as

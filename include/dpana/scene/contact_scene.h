@@ -175,6 +175,12 @@ namespace dpana
       {
         quiet = q;
       }
+      // Name of the parameter file, quoted in the FCLIB file's info.
+      void
+      set_scene_file(const std::string &file)
+      {
+        scene_file = file;
+      }
       // Tractions of element j: N, T (force / area, seeds' signs).
       double
       normal_traction(const unsigned int j) const
@@ -221,7 +227,9 @@ namespace dpana
       // Output.
       std::string output_directory = "output";
       bool        plot             = true;
-      bool        quiet            = false;
+      bool        write_fclib      = false;
+      std::string scene_file;
+      bool        quiet = false;
       std::string parameters_text;
 
       contact::ContactProblem problem_;

@@ -7,6 +7,7 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/contact/friction_set.h>
 #include <dpana/contact/residual.h>
+#include <dpana/io/fclib.h>
 #include <dpana/output/output.templates.h>
 #include <dpana/scene/contact_scene.h>
 
@@ -144,6 +145,7 @@ namespace dpana
       prm.enter_subsection("Output");
       output_directory = prm.get("Directory");
       plot             = prm.get_bool("Plot");
+      write_fclib      = prm.get_bool("Write FCLIB");
       prm.leave_subsection();
       prm.leave_subsection();
 
@@ -943,6 +945,22 @@ namespace dpana
       write_surface_vtu();
       const std::string csv = output_directory + "/contact.csv";
       write_csv(csv);
+      // The condensed problem, for other contact solvers: an FCLIB local
+      // problem in the convention of io/fclib.h.
+      if (write_fclib)
+        {
+          io::FclibInfo info;
+          info.title = "dpana contact scene" +
+                       (scene_file.empty() ? std::string() : " " + scene_file);
+          info.description =
+            "Condensed frictional contact problem of the dpana scene " +
+            (scene_file.empty() ? std::string("(unnamed)") : scene_file) +
+            ", dimension " + std::to_string(dim) + ", " +
+            std::to_string(problem_.n_elements()) + " contact elements";
+          io::write_fclib_local(output_directory + "/problem.hdf5",
+                                problem_,
+                                info);
+        }
 
       // The plot, by the python3 of the system (the one with matplotlib).
       if (plot)
