@@ -1,4 +1,5 @@
 #include <dpana/contact/friction_qp.h>
+#include <dpana/contact/method_of_multipliers.h>
 
 #include <Eigen/LU>
 
@@ -151,38 +152,19 @@ namespace dpana
             result.message = "friction PGS: sweep limit reached";
           return result;
         }
-      if (beta.size() != G.rows())
-        beta = Eigen::VectorXd::Zero(G.rows());
-      unsigned int total = 0;
-      while (total < options.max_iterations)
-        {
-          rhs = c;
-          rhs.noalias() += G.transpose() * (beta - penalty * e);
-          const int s = pgs(M_augmented,
-                            blocks_augmented,
-                            rhs,
-                            radius,
-                            T,
-                            options.max_iterations - total);
-          total += static_cast<unsigned int>(std::abs(s));
-          const Eigen::VectorXd violation = G * T - e;
-          beta += penalty * violation;
-          const double scale =
-            G.lpNorm<Eigen::Infinity>() * T.lpNorm<Eigen::Infinity>() +
-            e.lpNorm<Eigen::Infinity>();
-          if (s > 0 &&
-              violation.lpNorm<Eigen::Infinity>() <= options.tolerance * scale)
-            {
-              result.converged  = true;
-              result.iterations = total;
-              return result;
-            }
-          if (s < 0)
-            break;
-        }
-      result.iterations = total;
-      result.message = "friction PGS: sweep limit reached with equality rows";
-      return result;
+      return solve_with_multipliers(
+        G,
+        e,
+        penalty,
+        c,
+        options,
+        "friction",
+        [&](const Eigen::VectorXd &r, const unsigned int max_sweeps) {
+          return pgs(M_augmented, blocks_augmented, r, radius, T, max_sweeps);
+        },
+        rhs,
+        T,
+        beta);
     }
 
 

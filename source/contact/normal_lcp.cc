@@ -1,3 +1,4 @@
+#include <dpana/contact/method_of_multipliers.h>
 #include <dpana/contact/normal_lcp.h>
 
 #include <Eigen/Cholesky>
@@ -105,37 +106,19 @@ namespace dpana
         }
 
       // Method of multipliers for the equality rows.
-      if (alpha.size() != G.rows())
-        alpha = Eigen::VectorXd::Zero(G.rows());
-      unsigned int total = 0;
-      while (total < options.max_iterations)
-        {
-          rhs = b;
-          rhs.noalias() += G.transpose() * (alpha - penalty * e);
-          const int s = pgs(M_augmented,
-                            inverse_diagonal_augmented,
-                            rhs,
-                            N,
-                            options.max_iterations - total);
-          total += static_cast<unsigned int>(std::abs(s));
-          const Eigen::VectorXd violation = G * N - e;
-          alpha += penalty * violation;
-          const double scale =
-            G.lpNorm<Eigen::Infinity>() * N.lpNorm<Eigen::Infinity>() +
-            e.lpNorm<Eigen::Infinity>();
-          if (s > 0 &&
-              violation.lpNorm<Eigen::Infinity>() <= options.tolerance * scale)
-            {
-              result.converged  = true;
-              result.iterations = total;
-              return result;
-            }
-          if (s < 0)
-            break;
-        }
-      result.iterations = total;
-      result.message    = "normal PGS: sweep limit reached with equality rows";
-      return result;
+      return solve_with_multipliers(
+        G,
+        e,
+        penalty,
+        b,
+        options,
+        "normal",
+        [&](const Eigen::VectorXd &r, const unsigned int max_sweeps) {
+          return pgs(M_augmented, inverse_diagonal_augmented, r, N, max_sweeps);
+        },
+        rhs,
+        N,
+        alpha);
     }
 
 
