@@ -18,6 +18,7 @@
 #include <set>
 #include <string>
 
+#include "scene_test_tools.h"
 #include <gtest/gtest.h>
 
 namespace
@@ -65,18 +66,7 @@ namespace
            "end\n";
   }
 
-  template <int dim>
-  std::unique_ptr<scene::ContactScene<dim>>
-  make_scene(const std::string &text, const unsigned int n_bodies = 1)
-  {
-    dealii::ParameterHandler prm;
-    scene::declare_parameters(prm, dim, n_bodies);
-    prm.parse_input_from_string(text);
-    auto s = std::make_unique<scene::ContactScene<dim>>();
-    s->parse_parameters(prm, n_bodies);
-    s->set_quiet(true);
-    return s;
-  }
+  using dpana::test::make_scene;
 
   // The Hertz cylinder (quarter disc R = 40, 100 kN/mm on the half model)
   // on a rigid plane, with m contact refinements.
