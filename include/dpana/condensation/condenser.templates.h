@@ -32,22 +32,21 @@ namespace dpana
 
     // @sect3{The coupling operator V}
     //
-    // For each face of each contact element, the face values of the P1
-    // shape functions at the points of a QGaussSimplex rule (exact for the
-    // linear integrand phi_i . e_k on a flat face) through the MappingFE of
-    // the body.
+    // Column dim j + k of V holds the nodal forces of a unit traction along
+    // direction k of contact element j (n, then tau): V_ik = int phi_i e_k
+    // over the element's projection. On a face, the P1 shape function of
+    // one of the face's vertices is the barycentric coordinate of that
+    // vertex (the others vanish), so each quadrature point of the element
+    // (ContactElement::points, exact for this linear integrand) adds
+    // weight * lambda_v * e_k to the rows of vertex v. In a P1 system the
+    // base index of a cell's degree of freedom is the number of the cell
+    // vertex it sits on.
     template <int dim>
     void
     Condenser<dim>::assemble_coupling()
     {
-      const auto                          &fe = body.fe();
-      const dealii::QGaussSimplex<dim - 1> quadrature(2);
-      dealii::FEFaceValues<dim>            fe_face_values(body.mapping(),
-                                               fe,
-                                               quadrature,
-                                               dealii::update_values |
-                                                 dealii::update_JxW_values);
-      const unsigned int                   n = fe.n_dofs_per_cell();
+      const auto                                  &fe = body.fe();
+      const unsigned int                           n  = fe.n_dofs_per_cell();
       std::vector<dealii::types::global_dof_index> local(n);
       std::vector<Eigen::Triplet<double>>          triplets;
 
@@ -59,31 +58,27 @@ namespace dpana
           directions[0] = element.normal;
           for (unsigned int k = 1; k < dim; ++k)
             directions[k] = element.tangents[k - 1];
-          for (const unsigned int f : element.faces)
+          for (const auto &p : element.points)
             {
-              const auto &F = faces[f];
+              const auto &F = faces[p.face];
               const typename dealii::DoFHandler<dim>::active_cell_iterator cell(
                 &body.triangulation(),
                 F.cell->level(),
                 F.cell->index(),
                 &body.dof_handler());
-              fe_face_values.reinit(cell, F.face_no);
               cell->get_dof_indices(local);
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  double             phi_JxW = 0;
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    phi_JxW +=
-                      fe_face_values.shape_value(i, q) * fe_face_values.JxW(q);
-                  if (phi_JxW == 0.0)
-                    continue;
-                  for (unsigned int k = 0; k < dim; ++k)
-                    if (directions[k][c] != 0.0)
-                      triplets.emplace_back(local[i],
-                                            dim * j + k,
-                                            phi_JxW * directions[k][c]);
+                  const auto [c, b] = fe.system_to_component_index(i);
+                  const auto vertex = cell->vertex_index(b);
+                  for (unsigned int v = 0; v < F.vertices.size(); ++v)
+                    if (F.vertices[v] == vertex && p.barycentric[v] != 0.0)
+                      for (unsigned int k = 0; k < dim; ++k)
+                        if (directions[k][c] != 0.0)
+                          triplets.emplace_back(local[i],
+                                                dim * j + k,
+                                                p.weight * p.barycentric[v] *
+                                                  directions[k][c]);
                 }
             }
         }

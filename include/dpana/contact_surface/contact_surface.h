@@ -36,6 +36,26 @@ namespace dpana
     };
 
     /**
+     * A point of the quadrature rule of a contact element on one body: the
+     * face it lies on (an index into ContactSurface::get_faces()), its
+     * barycentric coordinates with respect to the face's vertices (in the
+     * order of Face::vertices), its position and its weight. The integrand
+     * of the coupling operator V is a P1 shape function times a constant
+     * traction, linear on each face, and the rules are exact for it: one
+     * point at the centroid of each face (matching surfaces), or one at the
+     * midpoint of each overlap of a face with a face of the other body
+     * (non-matching surfaces in 2D).
+     */
+    template <int dim>
+    struct SurfacePoint
+    {
+      unsigned int            face;
+      std::array<double, dim> barycentric;
+      dealii::Point<dim>      x;
+      double                  weight;
+    };
+
+    /**
      * A contact element: a group of adjacent faces that carries one
      * piecewise constant traction (N, T) in its local frame.
      *
@@ -45,6 +65,13 @@ namespace dpana
      * - tangents: tau (2D) or tau_1, tau_2 (3D), so that (n, tau) or
      *   (n, tau_1, tau_2) is a right-handed orthonormal frame (for the second
      *   body of a pair the frame of its partner, negated).
+     * - area: the area of the element's projection on the plane normal to
+     *   n (in 2D its length). Tractions are forces per unit projected area,
+     *   so that the forces on two paired surfaces balance exactly even when
+     *   one is curved (the cylinder) and the other flat (the foundation);
+     *   on a flat element it is the plain area.
+     * - points: the quadrature rule of this body's side of the element; the
+     *   weights add up to area.
      * - gap_integral: the integral over the element of the initial gap
      *   g_o(x) >= 0 measured along n (mm^3 in 3D, mm^2 in 2D); the mean gap
      *   is gap_integral / area.
@@ -56,6 +83,7 @@ namespace dpana
     struct ContactElement
     {
       std::vector<unsigned int>                   faces;
+      std::vector<SurfacePoint<dim>>              points;
       dealii::Tensor<1, dim>                      normal;
       std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
       double                                      area = 0;
@@ -111,6 +139,17 @@ namespace dpana
      * to a rigid plane (set_plane_gap()) or to the paired faces of the other
      * body (pair()). The faces are flat (P1 mapping), and the gap is linear on
      * each face, so the midpoint rule integrates it exactly.
+     *
+     * <h3>Two bodies</h3>
+     *
+     * The contact elements are those of the first body; the second body's
+     * side of element j is the part of its surface that projects, along n,
+     * onto element j. In 3D the two discretisations must match face by face
+     * (same projected centroids and areas). In 2D they need not: the faces
+     * of the second body are cut at the projections of the first body's
+     * vertices (a mortar projection with piecewise constant multipliers on
+     * the first body), which lets a cylinder meshed along its arc rest on a
+     * foundation meshed on a grid, or in a cavity of another radius.
      */
     template <int dim>
     class ContactSurface
@@ -140,12 +179,14 @@ namespace dpana
       build(const dealii::Triangulation<dim> &tria, const Options &options);
 
       /**
-       * Build the surface of the second body of a pair from the faces of
-       * @p tria that match, face by face, those of @p first (same
-       * tangential position of the centroid, same area): the elements are
-       * the same groups, with the frame of @p first negated, and the gap of
-       * @p first is set to the normal distance between the paired faces.
-       * Throws dpana::InputError if the two discretisations do not match.
+       * Build the surface of the second body of a pair: the elements are
+       * those of @p first, with its frame negated, and the gap of @p first is
+       * set to the normal distance between the two surfaces. Only the faces
+       * of @p tria that face the first body (outward normal . n < 0) take
+       * part. In 2D every face of @p first must be covered exactly once by
+       * the projections of these faces; in 3D the faces must match those of
+       * @p first one to one (same projected centroid and area). Throws
+       * dpana::InputError with a one-line message otherwise.
        */
       void
       pair(const dealii::Triangulation<dim> &tria,
@@ -243,6 +284,10 @@ namespace dpana
       group_greedy(const unsigned int size);
       void
       finish_elements();
+      void
+      pair_matching(ContactSurface<dim> &first);
+      void
+      pair_projected(ContactSurface<dim> &first);
     };
   } // namespace contact_surface
 } // namespace dpana

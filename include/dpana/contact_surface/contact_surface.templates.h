@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace dpana
 {
@@ -378,25 +379,47 @@ namespace dpana
 
 
 
-    // Area, centroid, frame and tangential extents of every element.
+    // Frame, projected area, quadrature points, centroid and tangential
+    // extents of every element. The frame comes first: the weight of a face
+    // is its area projected on the plane normal to n, |F| (n_F . n).
     template <int dim>
     void
     ContactSurface<dim>::finish_elements()
     {
       for (auto &e : elements)
         {
+          dealii::Tensor<1, dim> n;
+          for (const unsigned int f : e.faces)
+            n += faces[f].area * faces[f].normal;
+          e.normal   = opts.direction.norm() > 0 ? n_surface : n / n.norm();
+          e.tangents = tangential_frame(e.normal);
+
           e.area     = 0;
           e.centroid = dealii::Point<dim>();
-          dealii::Tensor<1, dim> n;
+          e.points.clear();
           e.s_min = e.t_min = std::numeric_limits<double>::max();
           e.s_max = e.t_max = -std::numeric_limits<double>::max();
           e.at_open_edge    = false;
           for (const unsigned int f : e.faces)
             {
-              const auto &F = faces[f];
-              e.area += F.area;
-              e.centroid += F.area * F.centroid;
-              n += F.area * F.normal;
+              const auto  &F = faces[f];
+              const double c = F.normal * e.normal;
+              if (!(c > 1e-3))
+                throw InputError(
+                  opts.body + ": the candidate face at " +
+                  internal::format_point(F.centroid) + " of '" + opts.boundary +
+                  "' is nearly parallel to the normal of its contact "
+                  "element; use smaller contact elements (parameter "
+                  "Contact / Faces per contact element) or a smaller candidate "
+                  "region");
+              SurfacePoint<dim> p;
+              p.face = f;
+              p.barycentric.fill(1.0 / dim);
+              p.x      = F.centroid;
+              p.weight = F.area * c;
+              e.points.push_back(p);
+              e.area += p.weight;
+              e.centroid += p.weight * F.centroid;
               for (const auto &x : F.points)
                 {
                   e.s_min = std::min(e.s_min, x * tau_surface[0]);
@@ -409,10 +432,8 @@ namespace dpana
                   e.at_open_edge = true;
             }
           e.centroid /= e.area;
-          e.normal   = opts.direction.norm() > 0 ? n_surface : n / n.norm();
-          e.tangents = tangential_frame(e.normal);
-          e.s        = e.centroid * tau_surface[0];
-          e.t        = dim == 3 ? e.centroid * tau_surface[dim - 2] : 0.0;
+          e.s = e.centroid * tau_surface[0];
+          e.t = dim == 3 ? e.centroid * tau_surface[dim - 2] : 0.0;
           if (dim == 2)
             e.t_min = e.t_max = 0;
           e.gap_integral = 0;
@@ -421,99 +442,221 @@ namespace dpana
 
 
 
-    // @sect3{Two bodies: matching surfaces}
+    // @sect3{Two bodies}
     //
-    // The faces of the second body are matched to those of the first by the
-    // position of their centroids in the tangent plane of the first (a
-    // tolerance of 1e-6 of the face size) and by their areas; the elements
-    // of the second body are then the same groups, with the frame negated:
-    // the traction N n + T tau on the first body is -(N n + T tau) on the
-    // second, and the relative normal displacement (u_1 - u_2) . n is the sum
-    // of the normal displacements of both bodies each along its own normal.
+    // The traction N n + T tau on the first body is -(N n + T tau) on the
+    // second: the second body's elements are the first's groups with the
+    // frame negated, and the relative normal displacement (u_1 - u_2) . n is
+    // the sum of the normal displacements of both bodies, each along its own
+    // normal. Only the faces of the second body that face the first take
+    // part (n_F . n < 0): the far side of a cavity projects onto the same
+    // tangential positions but is not in contact.
     template <int dim>
     void
     ContactSurface<dim>::pair(const dealii::Triangulation<dim> &tria,
                               const Options                    &options,
                               ContactSurface<dim>              &first)
     {
-      opts = options;
+      // Every face of the boundary is a candidate (the faces that straddle
+      // the edge of the candidate region are needed to cover the first
+      // body's faces there); the candidate region acts on the first body.
+      opts                   = options;
+      opts.region_half_width = 0;
       collect_faces(tria);
-      const auto &F1 = first.faces;
-      if (faces.size() != F1.size())
+      opts = options;
+      {
+        std::vector<Face<dim>> facing;
+        for (const auto &F : faces)
+          if (F.normal * first.n_surface < -1e-3)
+            facing.push_back(F);
+        faces = facing;
+      }
+      if (faces.empty())
+        throw InputError(opts.body + ": no face of the contact boundary '" +
+                         opts.boundary + "' in the candidate region faces " +
+                         first.opts.body +
+                         " (parameters Contact / Boundary 2, Contact "
+                         "direction)");
+      n_surface   = -first.n_surface;
+      tau_surface = first.tau_surface;
+      for (auto &t : tau_surface)
+        t *= -1.0;
+
+      elements = first.elements;
+      for (unsigned int j = 0; j < elements.size(); ++j)
+        {
+          auto &e  = elements[j];
+          e.normal = -first.elements[j].normal;
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            e.tangents[k] = -first.elements[j].tangents[k];
+          e.faces.clear();
+          e.points.clear();
+          e.at_open_edge = first.elements[j].at_open_edge;
+        }
+      if constexpr (dim == 2)
+        pair_projected(first);
+      else
+        pair_matching(first);
+
+      // Centroids of this side, and the gap of the first body: the integral
+      // over the element of the distance along n from its surface to this
+      // one, g = (x_2 - x_1) . n (pair_*() stored it in gap_integral). The
+      // open-edge flag is the first body's: its candidate region decides.
+      for (unsigned int j = 0; j < elements.size(); ++j)
+        {
+          auto &e    = elements[j];
+          e.centroid = dealii::Point<dim>();
+          double w   = 0;
+          for (const auto &p : e.points)
+            {
+              e.centroid += p.weight * p.x;
+              w += p.weight;
+            }
+          e.centroid /= w;
+          first.elements[j].gap_integral = e.gap_integral;
+        }
+    }
+
+
+
+    // 3D: the faces must match one to one. A face of the second body is the
+    // partner of a face of the first if their centroids coincide in the
+    // tangent plane (to 1e-6 of the face size) and their projected areas
+    // agree; the quadrature point of the partner is its centroid, with the
+    // weight of the first body's point, so the forces on both sides
+    // balance.
+    template <int dim>
+    void
+    ContactSurface<dim>::pair_matching(ContactSurface<dim> &first)
+    {
+      const auto &F1       = first.faces;
+      const auto  n        = first.n_surface;
+      const auto  mismatch = [&](const std::string &what) {
         throw InputError(
-          "Contact: the candidate surfaces do not match: " + first.opts.body +
-          " has " + std::to_string(F1.size()) + " faces on '" +
-          first.opts.boundary + "', " + opts.body + " has " +
-          std::to_string(faces.size()) + " on '" + opts.boundary +
-          "' (two-body contact needs matching meshes on Gamma_c)");
-      const auto             n = first.n_surface;
-      std::vector<Face<dim>> matched(F1.size());
-      std::vector<bool>      used(faces.size(), false);
+          "Contact: the candidate surfaces do not match: " + what +
+          " (two-body contact in 3D needs matching meshes on Gamma_c)");
+      };
+      std::vector<unsigned int> partner(F1.size());
+      std::vector<bool>         used(faces.size(), false);
       for (unsigned int k = 0; k < F1.size(); ++k)
         {
           const double tol =
             1e-6 * (dim == 2 ? F1[k].area : std::sqrt(F1[k].area));
-          bool found = false;
+          const double a1    = F1[k].area * std::abs(F1[k].normal * n);
+          bool         found = false;
           for (unsigned int m = 0; m < faces.size() && !found; ++m)
             {
               if (used[m])
                 continue;
               auto d = faces[m].centroid - F1[k].centroid;
               d -= (d * n) * n;
-              if (d.norm() < tol &&
-                  std::abs(faces[m].area - F1[k].area) < 1e-6 * F1[k].area)
+              const double a2 = faces[m].area * std::abs(faces[m].normal * n);
+              if (d.norm() < tol && std::abs(a2 - a1) < 1e-6 * a1)
                 {
-                  matched[k] = faces[m];
+                  partner[k] = m;
                   used[m]    = true;
                   found      = true;
                 }
             }
           if (!found)
-            throw InputError(
-              "Contact: the candidate surfaces do not match: the face of " +
-              first.opts.body + " at " +
-              internal::format_point(F1[k].centroid) + " has no partner on '" +
-              opts.boundary + "' of " + opts.body +
-              " (two-body contact needs matching meshes on Gamma_c)");
+            mismatch("the face of " + first.opts.body + " at " +
+                     internal::format_point(F1[k].centroid) +
+                     " has no partner on '" + opts.boundary + "' of " +
+                     opts.body);
         }
-      faces       = matched;
-      n_surface   = -first.n_surface;
-      tau_surface = first.tau_surface;
-      for (auto &t : tau_surface)
-        t *= -1.0;
-
-      // Same groups; geometry of this side; frame of the first negated. The
-      // tangential coordinates s, t are those of the first body.
-      elements = first.elements;
       for (unsigned int j = 0; j < elements.size(); ++j)
         {
-          auto &e    = elements[j];
-          e.area     = 0;
-          e.centroid = dealii::Point<dim>();
-          for (const unsigned int f : e.faces)
+          auto &e        = elements[j];
+          e.gap_integral = 0;
+          for (const auto &p1 : first.elements[j].points)
             {
-              e.area += faces[f].area;
-              e.centroid += faces[f].area * faces[f].centroid;
-              for (const unsigned int v : faces[f].vertices)
-                if (excluded_vertices.count(v))
-                  {
-                    e.at_open_edge                 = true;
-                    first.elements[j].at_open_edge = true;
-                  }
+              SurfacePoint<dim> p;
+              p.face = partner[p1.face];
+              p.barycentric.fill(1.0 / dim);
+              p.x      = faces[p.face].centroid;
+              p.weight = p1.weight;
+              e.points.push_back(p);
+              e.faces.push_back(p.face);
+              e.gap_integral +=
+                p.weight * ((p.x - p1.x) * first.elements[j].normal);
             }
-          e.centroid /= e.area;
-          e.normal = -first.elements[j].normal;
-          for (unsigned int k = 0; k < dim - 1; ++k)
-            e.tangents[k] = -first.elements[j].tangents[k];
+        }
+    }
 
-          // The gap along n of the first body: the distance from its face to
-          // the paired face, g = (x_2 - x_1) . n, exact for flat faces.
-          double g = 0;
-          for (const unsigned int f : e.faces)
-            g += F1[f].area * ((faces[f].centroid - F1[f].centroid) *
-                               first.elements[j].normal);
-          first.elements[j].gap_integral = g;
-          e.gap_integral                 = g;
+
+
+    // 2D: a mortar projection along the normal n of each contact element.
+    // Along its tangent tau the projection of a face f of the first body is
+    // the interval [a, b] and that of a face g of the second is [c, d];
+    // their overlap [lo, hi] is a segment on which both faces are straight,
+    // so the shape functions of both bodies and the gap are linear in s
+    // there, and the midpoint rule with weight hi - lo integrates them
+    // exactly. The weights of the first body's side of f add up to b - a,
+    // the projected length of f (its weight), so the forces balance. Each
+    // face of the first body must be covered exactly once (the overlaps add
+    // up to b - a): otherwise the first body's candidate surface reaches
+    // beyond the second body's, or the second body's surface folds over
+    // itself along n.
+    template <int dim>
+    void
+    ContactSurface<dim>::pair_projected(ContactSurface<dim> &first)
+    {
+      for (unsigned int j = 0; j < elements.size(); ++j)
+        {
+          auto       &e        = elements[j];
+          const auto &e1       = first.elements[j];
+          const auto  tau      = e1.tangents[0];
+          const auto  interval = [&](const Face<dim> &F) {
+            const double s0 = F.points[0] * tau, s1 = F.points[1] * tau;
+            return std::make_pair(std::min(s0, s1), std::max(s0, s1));
+          };
+          // The point of face F at tangential coordinate s and its
+          // barycentric coordinates.
+          const auto at = [&](const Face<dim> &F, const double s) {
+            const double s0 = F.points[0] * tau, s1 = F.points[1] * tau;
+            const double t = (s - s0) / (s1 - s0);
+            return std::make_pair(std::array<double, dim>{{1 - t, t}},
+                                  dealii::Point<dim>(
+                                    F.points[0] +
+                                    t * (F.points[1] - F.points[0])));
+          };
+          e.gap_integral = 0;
+          for (const unsigned int f : e1.faces)
+            {
+              const auto  &F1 = first.faces[f];
+              const auto   ab = interval(F1);
+              const double a = ab.first, b = ab.second;
+              double       covered = 0;
+              for (unsigned int g = 0; g < faces.size(); ++g)
+                {
+                  const auto   cd = interval(faces[g]);
+                  const double lo = std::max(a, cd.first),
+                               hi = std::min(b, cd.second);
+                  if (!(hi - lo > 1e-12 * (b - a)))
+                    continue;
+                  const double      s = 0.5 * (lo + hi);
+                  SurfacePoint<dim> p;
+                  p.face                       = g;
+                  std::tie(p.barycentric, p.x) = at(faces[g], s);
+                  p.weight                     = hi - lo;
+                  e.points.push_back(p);
+                  if (std::find(e.faces.begin(), e.faces.end(), g) ==
+                      e.faces.end())
+                    e.faces.push_back(g);
+                  e.gap_integral +=
+                    p.weight * ((p.x - at(F1, s).second) * e1.normal);
+                  covered += hi - lo;
+                }
+              if (std::abs(covered - (b - a)) > 1e-9 * (b - a))
+                throw InputError(
+                  "Contact: the face of " + first.opts.body + " at " +
+                  internal::format_point(F1.centroid) + " is " +
+                  (covered < b - a ? "not covered by" :
+                                     "covered more than once by") +
+                  " the projection of '" + opts.boundary + "' of " + opts.body +
+                  " along the contact direction (enlarge the boundary of " +
+                  opts.body + " or reduce Contact / Candidate half width)");
+            }
         }
     }
 
@@ -526,9 +669,8 @@ namespace dpana
       for (auto &e : elements)
         {
           e.gap_integral = 0;
-          for (const unsigned int f : e.faces)
-            e.gap_integral +=
-              faces[f].area * ((point - faces[f].centroid) * e.normal);
+          for (const auto &p : e.points)
+            e.gap_integral += p.weight * ((point - p.x) * e.normal);
         }
     }
 

@@ -10,6 +10,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -125,35 +126,207 @@ TEST(ContactSurface, GreedyAgglomerationCoversTheSurface)
 
 
 
-// Two bodies whose meshes do not match on the interface (2.5 mm edges on
-// the block, 80/30 mm on the foundation) are refused with one line.
-TEST(ContactSurface, NonMatchingPairIsRefused)
+namespace
 {
-  const std::string text = "set Dimension = 2\n"
+  // Two stacked rectangles in 2D: the block [0, 40] x [0, 40] with n1 x n1
+  // cells on the foundation [0, 40] x [-40, 0] with n2 x n2 cells (n1 != n2:
+  // non-matching interface), 50 MPa on the top of the block, 100 MPa on the
+  // right sides of both, symmetry on the left sides, the base of the
+  // foundation fixed vertically, frictionless.
+  std::string
+  stacked_prm(const unsigned int n1, const unsigned int n2)
+  {
+    const auto body = [](const std::string &name,
+                         const std::string &lower,
+                         const std::string &upper,
+                         const unsigned int n,
+                         const std::string &conditions,
+                         const std::string &loads) {
+      return "subsection " + name +
+             "\n"
+             "  subsection Geometry\n"
+             "    set Lower corner = " +
+             lower + "\n    set Upper corner = " + upper +
+             "\n    set Subdivisions = " + std::to_string(n) + ", " +
+             std::to_string(n) +
+             "\n"
+             "  end\n"
+             "  subsection Boundary conditions\n" +
+             conditions +
+             "  end\n"
+             "  subsection Loads\n" +
+             loads +
+             "  end\n"
+             "end\n";
+    };
+    return "set Dimension = 2\n"
+           "set Number of bodies = 2\n" +
+           body("Body 1",
+                "0, 0",
+                "40, 40",
+                n1,
+                "    set Symmetry = left\n",
+                "    set Pressure = top: 50; right: 100\n") +
+           body("Body 2",
+                "0, -40",
+                "40, 0",
+                n2,
+                "    set Symmetry = left\n    set Fixed = bottom: y\n",
+                "    set Pressure = right: 100\n") +
+           "subsection Contact\n"
+           "  set Boundary 1 = bottom\n"
+           "  set Boundary 2 = top\n"
+           "  set Contact direction = 0, -1\n"
+           "  set Friction coefficient = 0\n"
+           "end\n";
+  }
+} // namespace
+
+
+
+// Patch test of the 2D mortar projection. The stacked blocks have the
+// exact solution of the receding block (seed 000, section 4.2.1) in both
+// bodies: the uniform stress sigma_xx = -100, sigma_yy = -50 MPa, with a
+// linear displacement that P1 elements represent exactly, and a uniform
+// contact pressure of 50 MPa. The interface discretisations do not match
+// (16 edges against 13), yet the projection integrates the shape functions
+// of both sides exactly, so every contact element must carry N = -50 MPa,
+// T = 0 up to round-off, and the forces on the two sides must balance:
+// the columns of V1 and V2 add up to the element's projected length along
+// +n and -n.
+TEST(ContactSurface, NonMatchingPatchTest2D)
+{
+  auto s = make_scene<2>(stacked_prm(16, 13), 2);
+  s->run(false);
+  ASSERT_TRUE(s->summary().result.converged);
+  ASSERT_EQ(s->summary().n_elements, 8u);
+  for (unsigned int j = 0; j < s->summary().n_elements; ++j)
+    {
+      EXPECT_NEAR(s->normal_traction(j), -50.0, 50.0 * 1e-9) << j;
+      EXPECT_NEAR(s->tangential_traction(j), 0.0, 50.0 * 1e-9) << j;
+      EXPECT_NEAR(s->surface(0).element(j).mean_gap(), 0.0, 1e-12);
+    }
+  // The frames are n = (0, -1), tau = (1, 0) on body 1 and their negatives
+  // on body 2; each column has non-zeros in one component only, so its sum
+  // is the resultant of the unit traction: +-5 mm (2 edges of 2.5 mm).
+  for (unsigned int b = 0; b < 2; ++b)
+    {
+      const auto &V = s->condenser(b).coupling();
+      for (unsigned int j = 0; j < s->surface(b).n_elements(); ++j)
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            const double sign = (b == 0) == (k == 0) ? -1.0 : 1.0;
+            EXPECT_NEAR(Eigen::VectorXd(V.col(2 * j + k)).sum(),
+                        sign * 5.0,
+                        1e-12)
+              << "body " << b << " element " << j << " component " << k;
+          }
+    }
+}
+
+
+
+// The gap of a curved body paired with a flat one: a quarter disc of
+// radius 40 touching the top y = 0 of a rectangle at (0, 0). The gap
+// integrals from the 2D projection (the second body's faces cut at the
+// projections of the arc's vertices) must equal those of the rigid plane
+// y = 0 computed face by face (ContactSurface::set_plane_gap()), which is
+// the same integral by another route.
+TEST(ContactSurface, ProjectedGapOfArcOnPlane)
+{
+  const std::string disc    = "  subsection Geometry\n"
+                              "    set Type = quarter disc\n"
+                              "    set Radius = 40\n"
+                              "    set Centre = 0, 40\n"
+                              "    set Global refinements = 2\n"
+                              "    set Contact refinements = 2\n"
+                              "    set Contact refinement radius = 10\n"
+                              "  end\n"
+                              "  subsection Boundary conditions\n"
+                              "    set Symmetry = axis\n"
+                              "  end\n"
+                              "  subsection Loads\n"
+                              "    set Concentrated forces = 0, 40: 0, -1000\n"
+                              "  end\n"
+                              "end\n";
+  const std::string contact = "subsection Contact\n"
+                              "  set Boundary 1 = curved\n"
+                              "  set Boundary 2 = top\n"
+                              "  set Candidate centre = 0, 0\n"
+                              "  set Candidate half width = 12\n"
+                              "  set Contact direction = 0, -1\n"
+                              "end\n";
+  auto              one =
+    make_scene<2>("set Dimension = 2\nsubsection Body 1\n" + disc + contact, 1);
+  one->setup_bodies();
+  one->setup_surfaces();
+  auto two = make_scene<2>(
+    "set Dimension = 2\nset Number of bodies = 2\nsubsection Body 1\n" + disc +
+      "subsection Body 2\n"
+      "  subsection Geometry\n"
+      "    set Lower corner = 0, -20\n"
+      "    set Upper corner = 30, 0\n"
+      "    set Subdivisions = 7, 5\n"
+      "  end\n"
+      "  subsection Boundary conditions\n"
+      "    set Fixed = bottom: x, y\n"
+      "  end\n"
+      "end\n" +
+      contact,
+    2);
+  two->setup_bodies();
+  two->setup_surfaces();
+  const auto &rigid = one->surface(0), &paired = two->surface(0);
+  ASSERT_EQ(rigid.n_elements(), paired.n_elements());
+  double largest = 0;
+  for (unsigned int j = 0; j < rigid.n_elements(); ++j)
+    {
+      largest = std::max(largest, rigid.element(j).gap_integral);
+      EXPECT_NEAR(paired.element(j).gap_integral,
+                  rigid.element(j).gap_integral,
+                  1e-12 * 12 * 12)
+        << "element " << j;
+      EXPECT_NEAR(two->surface(1).element(j).area,
+                  rigid.element(j).area,
+                  1e-12);
+    }
+  EXPECT_GT(largest, 0.0);
+}
+
+
+
+// In 3D the two discretisations must match: a box base of 4 x 2 cells on a
+// foundation top of 3 x 2 cells is refused with one line.
+TEST(ContactSurface, NonMatchingPairIsRefusedIn3D)
+{
+  const std::string text = "set Dimension = 3\n"
                            "set Number of bodies = 2\n"
                            "subsection Body 1\n"
                            "  subsection Geometry\n"
-                           "    set Upper corner = 40, 40\n"
-                           "    set Subdivisions = 16, 16\n"
+                           "    set Type = box\n"
+                           "    set Lower corner = 0, 0, 0\n"
+                           "    set Upper corner = 8, 2, 4\n"
+                           "    set Subdivisions = 4, 1, 2\n"
                            "  end\n"
                            "  subsection Boundary conditions\n"
-                           "    set Symmetry = left\n"
+                           "    set Fixed = top: x, y, z\n"
                            "  end\n"
                            "end\n"
                            "subsection Body 2\n"
                            "  subsection Geometry\n"
-                           "    set Lower corner = 0, -80\n"
-                           "    set Upper corner = 80, 0\n"
-                           "    set Subdivisions = 30, 30\n"
+                           "    set Type = box\n"
+                           "    set Lower corner = 0, -2, 0\n"
+                           "    set Upper corner = 8, 0, 4\n"
+                           "    set Subdivisions = 3, 1, 2\n"
                            "  end\n"
                            "  subsection Boundary conditions\n"
-                           "    set Fixed = bottom: x, y\n"
+                           "    set Fixed = bottom: x, y, z\n"
                            "  end\n"
                            "end\n"
                            "subsection Contact\n"
-                           "  set Candidate half width = 40\n"
+                           "  set Contact direction = 0, -1, 0\n"
                            "end\n";
-  auto              s    = make_scene<2>(text, 2);
+  auto              s    = make_scene<3>(text, 2);
   s->setup_bodies();
   try
     {
