@@ -66,44 +66,11 @@ namespace
            "end\n";
   }
 
+  using dpana::test::hertz_prm;
   using dpana::test::make_scene;
 
   // The Hertz cylinder (quarter disc R = 40, 100 kN/mm on the half model)
   // on a rigid plane, with m contact refinements.
-  std::string
-  hertz_prm(const unsigned int m, const double half_width, const double mu)
-  {
-    return "set Dimension = 2\n"
-           "subsection Body 1\n"
-           "  subsection Geometry\n"
-           "    set Type = quarter disc\n"
-           "    set Radius = 40\n"
-           "    set Centre = 0, 40\n"
-           "    set Global refinements = 2\n"
-           "    set Contact refinements = " +
-           std::to_string(m) +
-           "\n"
-           "    set Contact refinement radius = 14\n"
-           "  end\n"
-           "  subsection Boundary conditions\n"
-           "    set Symmetry = axis\n"
-           "  end\n"
-           "  subsection Loads\n"
-           "    set Concentrated forces = 0, 40: 0, -100000\n"
-           "  end\n"
-           "end\n"
-           "subsection Contact\n"
-           "  set Boundary 1 = curved\n"
-           "  set Candidate centre = 0, 0\n"
-           "  set Candidate half width = " +
-           std::to_string(half_width) +
-           "\n"
-           "  set Contact direction = 0, -1\n"
-           "  set Friction coefficient = " +
-           std::to_string(mu) +
-           "\n"
-           "end\n";
-  }
 } // namespace
 
 
