@@ -498,6 +498,28 @@ namespace dpana
       else
         pair_matching(first);
 
+      // Keep only the faces that some element uses, renumbered.
+      {
+        std::vector<unsigned int> index(faces.size(),
+                                        dealii::numbers::invalid_unsigned_int);
+        std::vector<Face<dim>>    used;
+        for (auto &e : elements)
+          {
+            for (auto &p : e.points)
+              {
+                if (index[p.face] == dealii::numbers::invalid_unsigned_int)
+                  {
+                    index[p.face] = used.size();
+                    used.push_back(faces[p.face]);
+                  }
+                p.face = index[p.face];
+              }
+            for (auto &f : e.faces)
+              f = index[f];
+          }
+        faces = used;
+      }
+
       // Centroids of this side, and the gap of the first body: the integral
       // over the element of the distance along n from its surface to this
       // one, g = (x_2 - x_1) . n (pair_*() stored it in gap_integral). The
