@@ -75,6 +75,10 @@ namespace dpana
 
 
 
+    template void
+    write_vtu_file(const Body<2> &, const std::string &);
+    template void
+    write_vtu_file(const Body<3> &, const std::string &);
     template std::vector<std::string>
     write_vtu(const Body<2> &, const std::string &);
     template std::vector<std::string>

@@ -188,8 +188,24 @@ namespace dpana
     solve();
 
     /**
-     * The stress in each cell (constant for P1), von Mises stress, and the
-     * reaction forces of the supported boundaries.
+     * Replaces the displacement by @p solution, a vector of the body's
+     * degrees of freedom computed elsewhere (a contact run recovers it from
+     * the contact tractions, u = K^{-1} (f + V r)). Call compute_stresses()
+     * or postprocess() afterwards.
+     */
+    void
+    set_solution(const dealii::Vector<double> &solution);
+
+    /**
+     * The stress in each cell (constant for P1), its out-of-plane component
+     * in 2D and the von Mises stress, from the current displacement.
+     */
+    void
+    compute_stresses();
+
+    /**
+     * compute_stresses(), and the reaction forces of the supported
+     * boundaries.
      */
     void
     postprocess();

@@ -788,46 +788,36 @@ namespace dpana
 
 
 
-  // Stresses: the strain of a P1 field is constant in a cell, so one
-  // evaluation at the centroid gives it. Reactions: r = K u - f with the
-  // UNCONSTRAINED K and f, assembled cell by cell; r vanishes (to round-off)
-  // at free values and is the support force at constrained ones.
   template <int dim>
   void
-  Body<dim>::postprocess()
+  Body<dim>::set_solution(const dealii::Vector<double> &solution)
   {
-    const dealii::QGaussSimplex<dim>     centroid(1);
-    const dealii::QGaussSimplex<dim>     quadrature(2);
-    const dealii::QGaussSimplex<dim - 1> face_quadrature(2);
-    dealii::FEValues<dim>                fe_centroid(mapping_,
+    AssertThrow(solution.size() == dof_handler_.n_dofs(),
+                dealii::ExcDimensionMismatch(solution.size(),
+                                             dof_handler_.n_dofs()));
+    u = solution;
+  }
+
+
+
+  // Stresses: the strain of a P1 field is constant in a cell, so one
+  // evaluation at the centroid gives it. The von Mises stress is that of the
+  // full 3D stress tensor, with sigma_zz the out-of-plane stress in 2D:
+  //   sigma_vM = sqrt( 1/2 [ (sxx - syy)^2 + (syy - szz)^2 + (szz - sxx)^2 ]
+  //                    + 3 (sxy^2 + syz^2 + sxz^2) ) = sqrt(3 J2).
+  template <int dim>
+  void
+  Body<dim>::compute_stresses()
+  {
+    const dealii::QGaussSimplex<dim>         centroid(1);
+    dealii::FEValues<dim>                    fe_centroid(mapping_,
                                       fe_,
                                       centroid,
                                       dealii::update_gradients);
-    dealii::FEValues<dim>                fe_values(mapping_,
-                                    fe_,
-                                    quadrature,
-                                    dealii::update_values |
-                                      dealii::update_gradients |
-                                      dealii::update_quadrature_points |
-                                      dealii::update_JxW_values);
-    dealii::FEFaceValues<dim>            fe_face_values(mapping_,
-                                             fe_,
-                                             face_quadrature,
-                                             dealii::update_values |
-                                               dealii::update_normal_vectors |
-                                               dealii::update_JxW_values);
-
     const dealii::FEValuesExtractors::Vector displacement(0);
-    const unsigned int                       n = fe_.n_dofs_per_cell();
     stress.assign(tria.n_active_cells(), {});
     stress_zz.assign(dim == 2 ? tria.n_active_cells() : 0, 0.0);
     von_mises.assign(tria.n_active_cells(), 0.0);
-
-    dealii::Vector<double>     residual(u.size());
-    dealii::FullMatrix<double> cell_matrix(n, n);
-    dealii::Vector<double>     cell_rhs(n), u_local(n), Ku_local(n);
-    std::vector<dealii::types::global_dof_index> local(n);
-    applied_resultant = 0;
 
     std::vector<dealii::SymmetricTensor<2, dim>> strain(1);
     for (const auto &cell : dof_handler_.active_cell_iterators())
@@ -843,7 +833,6 @@ namespace dpana
             szz           = material_.out_of_plane_stress(s);
             stress_zz[ci] = szz;
           }
-        // Von Mises of the full stress, sigma_zz included in 2D.
         double sxx = s[0][0], syy = s[1][1];
         double szz3   = dim == 3 ? s[dim - 1][dim - 1] : szz;
         double shear2 = s[0][1] * s[0][1];
@@ -853,7 +842,45 @@ namespace dpana
                                          (syy - szz3) * (syy - szz3) +
                                          (szz3 - sxx) * (szz3 - sxx)) +
                                   3.0 * shear2);
+      }
+  }
 
+
+
+  // Reactions: r = K u - f with the UNCONSTRAINED K and f, assembled cell by
+  // cell; r vanishes (to round-off) at free values and is the support force
+  // at constrained ones.
+  template <int dim>
+  void
+  Body<dim>::postprocess()
+  {
+    compute_stresses();
+
+    const dealii::QGaussSimplex<dim>     quadrature(2);
+    const dealii::QGaussSimplex<dim - 1> face_quadrature(2);
+    dealii::FEValues<dim>                fe_values(mapping_,
+                                    fe_,
+                                    quadrature,
+                                    dealii::update_values |
+                                      dealii::update_gradients |
+                                      dealii::update_quadrature_points |
+                                      dealii::update_JxW_values);
+    dealii::FEFaceValues<dim>            fe_face_values(mapping_,
+                                             fe_,
+                                             face_quadrature,
+                                             dealii::update_values |
+                                               dealii::update_normal_vectors |
+                                               dealii::update_JxW_values);
+
+    const unsigned int         n = fe_.n_dofs_per_cell();
+    dealii::Vector<double>     residual(u.size());
+    dealii::FullMatrix<double> cell_matrix(n, n);
+    dealii::Vector<double>     cell_rhs(n), u_local(n), Ku_local(n);
+    std::vector<dealii::types::global_dof_index> local(n);
+    applied_resultant = 0;
+
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
         assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < n; ++i)

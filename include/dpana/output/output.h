@@ -38,13 +38,22 @@ namespace dpana
     file_stem(const std::string &body_name);
 
     /**
-     * Writes DIRECTORY/STEM.vtu and DIRECTORY/STEM.pvd for a solved and
-     * postprocessed body:
+     * Writes the VTU file @p filename of a solved body whose stresses have
+     * been computed (Body::compute_stresses() or Body::postprocess()):
      * - point data "displacement" (mm), a vector (ParaView: Warp By Vector);
      * - cell data "stress_xx", "stress_yy", "stress_xy" (, "stress_zz",
      *   "stress_yz", "stress_xz") in MPa, constant in each P1 cell, with
      *   "stress_zz" the out-of-plane stress in 2D, and "von_mises" (MPa).
-     * Returns the names of the files written.
+     * The elastic runs and the contact runs both write their bodies with it.
+     */
+    template <int dim>
+    void
+    write_vtu_file(const Body<dim> &body, const std::string &filename);
+
+    /**
+     * Writes DIRECTORY/STEM.vtu (by write_vtu_file()) and DIRECTORY/STEM.pvd
+     * for a solved and postprocessed body. Returns the names of the files
+     * written.
      */
     template <int dim>
     std::vector<std::string>

@@ -20,8 +20,8 @@ namespace dpana
   namespace output
   {
     template <int dim>
-    std::vector<std::string>
-    write_vtu(const Body<dim> &body, const std::string &directory)
+    void
+    write_vtu_file(const Body<dim> &body, const std::string &filename)
     {
       dealii::DataOut<dim> data_out;
       data_out.attach_dof_handler(body.dof_handler());
@@ -75,12 +75,19 @@ namespace dpana
 
       data_out.build_patches(body.mapping());
 
+      std::ofstream out(filename);
+      data_out.write_vtu(out);
+      AssertThrow(out, dealii::ExcIO());
+    }
+
+
+
+    template <int dim>
+    std::vector<std::string>
+    write_vtu(const Body<dim> &body, const std::string &directory)
+    {
       const std::string stem = file_stem(body.name());
-      {
-        std::ofstream out(directory + "/" + stem + ".vtu");
-        data_out.write_vtu(out);
-        AssertThrow(out, dealii::ExcIO());
-      }
+      write_vtu_file(body, directory + "/" + stem + ".vtu");
       {
         std::ofstream out(directory + "/" + stem + ".pvd");
         dealii::DataOutBase::write_pvd_record(out, {{0.0, stem + ".vtu"}});

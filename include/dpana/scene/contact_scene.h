@@ -160,10 +160,11 @@ namespace dpana
       {
         return *bodies[b];
       }
+      // The displacement of body b recovered from the contact tractions.
       const dealii::Vector<double> &
       displacement(const unsigned int b) const
       {
-        return displacements[b];
+        return bodies[b]->solution();
       }
       void
       set_output_directory(const std::string &dir)
@@ -198,7 +199,6 @@ namespace dpana
       std::vector<std::unique_ptr<contact_surface::ContactSurface<dim>>>
                                                                  surfaces;
       std::vector<std::unique_ptr<condensation::Condenser<dim>>> condensers;
-      std::vector<dealii::Vector<double>>                        displacements;
 
       // Contact parameters.
       std::vector<std::string> boundary;
@@ -237,8 +237,6 @@ namespace dpana
 
       void
       compute_summary();
-      void
-      write_body_vtu(const unsigned int b) const;
       void
       write_surface_vtu() const;
       void

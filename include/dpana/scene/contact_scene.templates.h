@@ -11,12 +11,7 @@
 #include <dpana/output/output.templates.h>
 #include <dpana/scene/contact_scene.h>
 
-#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
-
-#include <deal.II/fe/fe_values.h>
-
-#include <deal.II/numerics/data_out.h>
 
 #include <algorithm>
 #include <chrono>
@@ -414,8 +409,7 @@ namespace dpana
     void
     ContactScene<dim>::recover()
     {
-      const auto start = std::chrono::steady_clock::now();
-      displacements.resize(bodies.size());
+      const auto   start  = std::chrono::steady_clock::now();
       unsigned int offset = 0;
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
@@ -425,7 +419,9 @@ namespace dpana
                  Eigen::VectorXd(summary_.result.alpha.segment(offset, mb)) :
                  Eigen::VectorXd();
           offset += mb;
-          displacements[b] = condensers[b]->recover(summary_.result.r, alpha);
+          bodies[b]->set_solution(
+            condensers[b]->recover(summary_.result.r, alpha));
+          bodies[b]->compute_stresses();
         }
       compute_summary();
       summary_.timings["recovery"] = internal::seconds_since(start);
@@ -664,81 +660,11 @@ namespace dpana
 
 
     // @sect3{Output}
-    template <int dim>
-    void
-    ContactScene<dim>::write_body_vtu(const unsigned int b) const
-    {
-      const auto &body = *bodies[b];
-      const auto &u    = displacements[b];
-
-      // Stresses: the strain of a P1 field is constant per cell.
-      const dealii::QGaussSimplex<dim>             centroid(1);
-      dealii::FEValues<dim>                        fe_values(body.mapping(),
-                                      body.fe(),
-                                      centroid,
-                                      dealii::update_gradients);
-      const dealii::FEValuesExtractors::Vector     displacement(0);
-      std::vector<dealii::SymmetricTensor<2, dim>> strain(1);
-      const unsigned int n_cells = body.triangulation().n_active_cells();
-      std::vector<dealii::Vector<double>> sigma(
-        dim * (dim + 1) / 2, dealii::Vector<double>(n_cells));
-      dealii::Vector<double> von_mises(n_cells);
-      for (const auto &cell : body.dof_handler().active_cell_iterators())
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_symmetric_gradients(u, strain);
-          const auto   s  = body.material().template stress<dim>(strain[0]);
-          const auto   ci = cell->active_cell_index();
-          unsigned int c  = 0;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = i; j < dim; ++j)
-              sigma[c++][ci] = s[i][j];
-          double full[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              full[i][j] = s[i][j];
-          if constexpr (dim == 2)
-            full[2][2] = body.material().out_of_plane_stress(s);
-          const double tr = (full[0][0] + full[1][1] + full[2][2]) / 3;
-          double       J2 = 0;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              {
-                const double d = full[i][j] - (i == j ? tr : 0.0);
-                J2 += 0.5 * d * d;
-              }
-          von_mises[ci] = std::sqrt(3 * J2);
-        }
-
-      dealii::DataOut<dim> data_out;
-      data_out.attach_dof_handler(body.dof_handler());
-      std::vector<std::string> names(dim, "displacement");
-      std::vector<
-        dealii::DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(
-          dim,
-          dealii::DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(u,
-                               names,
-                               dealii::DataOut<dim>::type_dof_data,
-                               interpretation);
-      const char  *axes = "xyz";
-      unsigned int c    = 0;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = i; j < dim; ++j)
-          data_out.add_data_vector(sigma[c++],
-                                   std::string("sigma_") + axes[i] + axes[j],
-                                   dealii::DataOut<dim>::type_cell_data);
-      data_out.add_data_vector(von_mises,
-                               "von_Mises",
-                               dealii::DataOut<dim>::type_cell_data);
-      data_out.build_patches(body.mapping());
-      std::ofstream file(output_directory + "/body_" + std::to_string(b + 1) +
-                         ".vtu");
-      data_out.write_vtu(file);
-    }
-
-
+    //
+    // Each body is written by the writer of the elastic runs,
+    // output::write_vtu_file(): the displacement recovered from the contact
+    // tractions, the stresses and the von Mises stress that recover() had
+    // Body::compute_stresses() evaluate.
 
     // The contact surface: one VTK cell per face (a line in 2D, a triangle
     // in 3D) with the values of its contact element as cell data.
@@ -935,8 +861,9 @@ namespace dpana
       std::vector<std::pair<double, std::string>> records;
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          write_body_vtu(b);
-          records.emplace_back(0.0, "body_" + std::to_string(b + 1) + ".vtu");
+          const std::string name = "body_" + std::to_string(b + 1) + ".vtu";
+          output::write_vtu_file(*bodies[b], output_directory + "/" + name);
+          records.emplace_back(0.0, name);
         }
       {
         std::ofstream pvd(output_directory + "/bodies.pvd");
