@@ -41,6 +41,63 @@ namespace dpana
 
 
 
+    // @sect3{One element}
+    //
+    // The modified displacement tilde u_j = (u_N - mu sigma(-u_T), u_T), the
+    // point x = r_j - rho tilde u_j and its projection p onto K_j give
+    // F_j = r_j - p.
+    void
+    natural_map_element(const FrictionSet &set,
+                        const double       rho,
+                        const double       mu,
+                        const double      *rj,
+                        const double      *uj,
+                        double            *F)
+    {
+      const unsigned int m           = set.tangential_dim();
+      double             minus_uT[2] = {0.0, 0.0};
+      for (unsigned int k = 0; k < m; ++k)
+        minus_uT[k] = -uj[1 + k];
+      const double sigma = set.support(minus_uT);
+      double       x[3], p[3];
+      x[0] = rj[0] - rho * (uj[0] - mu * sigma);
+      for (unsigned int k = 0; k < m; ++k)
+        x[1 + k] = rj[1 + k] - rho * uj[1 + k];
+      set.project_cone(mu, x, p);
+      for (unsigned int k = 0; k <= m; ++k)
+        F[k] = rj[k] - p[k];
+    }
+
+
+
+    Eigen::VectorXd
+    element_residuals(const ContactProblem  &problem,
+                      const Eigen::VectorXd &r,
+                      const Eigen::VectorXd &u)
+    {
+      if (r.size() != problem.D.size() || u.size() != problem.D.size())
+        throw std::invalid_argument(
+          "element_residuals: r and u must have the size of D");
+      const unsigned int d = problem.dim;
+      const unsigned int n = problem.n_elements();
+      const FrictionSet  set(problem);
+      const double       rho = residual_rho(problem);
+      Eigen::VectorXd    norms(n);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double F[3];
+          natural_map_element(
+            set, rho, problem.mu[j], r.data() + d * j, u.data() + d * j, F);
+          double sum = 0.0;
+          for (unsigned int k = 0; k < d; ++k)
+            sum += F[k] * F[k];
+          norms[j] = std::sqrt(sum);
+        }
+      return norms;
+    }
+
+
+
     ResidualFigures
     compute_residual_from_u(const ContactProblem  &problem,
                             const FrictionSet     &set,
@@ -49,7 +106,6 @@ namespace dpana
                             const Eigen::VectorXd &u)
     {
       const unsigned int d = problem.dim;
-      const unsigned int m = d - 1;
       const unsigned int n = problem.n_elements();
       ResidualFigures    f;
       double             sum = 0.0;
@@ -58,18 +114,10 @@ namespace dpana
           const double *rj = r.data() + d * j;
           const double *uj = u.data() + d * j;
           const double  mu = problem.mu[j];
-          // Modified displacement and the projected point.
-          double minus_uT[2] = {0.0, 0.0};
-          for (unsigned int k = 0; k < m; ++k)
-            minus_uT[k] = -uj[1 + k];
-          const double sigma = set.support(minus_uT);
-          double       x[3], p[3];
-          x[0] = rj[0] - rho * (uj[0] - mu * sigma);
-          for (unsigned int k = 0; k < m; ++k)
-            x[1 + k] = rj[1 + k] - rho * uj[1 + k];
-          set.project_cone(mu, x, p);
+          double        F[3];
+          natural_map_element(set, rho, mu, rj, uj, F);
           for (unsigned int k = 0; k < d; ++k)
-            sum += (rj[k] - p[k]) * (rj[k] - p[k]);
+            sum += F[k] * F[k];
 
           f.penetration = std::max(f.penetration, uj[0]);
           f.cone_violation =

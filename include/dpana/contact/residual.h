@@ -78,6 +78,30 @@ namespace dpana
                             const Eigen::VectorXd &r,
                             const Eigen::VectorXd &u);
 
+    // The natural-map vector of one element, F_j = r_j - Pi_{K_j}(r_j - rho
+    // tilde u_j) (see above), written to F_j (d = set.tangential_dim() + 1
+    // entries), from the d tractions r_j and displacements u_j of the
+    // element and its friction coefficient mu_j. compute_residual_from_u()
+    // sums the squares of these entries over all elements.
+    void
+    natural_map_element(const FrictionSet &set,
+                        const double       rho,
+                        const double       mu_j,
+                        const double      *r_j,
+                        const double      *u_j,
+                        double            *F_j);
+
+    // The norms ||F_j|| of every element (units of the tractions), from the
+    // displacements u = A r + D + G^T alpha. They relate to the shared
+    // figure by
+    //   natural_map = sqrt( sum_j ||F_j||^2 ) / ( ||r||_2 + rho ||D||_2 )
+    // (when the denominator is positive), so that they show where on the
+    // contact surface the residual of a solution sits.
+    Eigen::VectorXd
+    element_residuals(const ContactProblem  &problem,
+                      const Eigen::VectorXd &r,
+                      const Eigen::VectorXd &u);
+
     // Status of each element. With s = ||r||_inf: separated if
     // N_j >= -tolerance s; otherwise slip if gamma(T_j) >= -mu_j N_j -
     // tolerance s (for mu_j = 0 every contact is slip), otherwise stick.

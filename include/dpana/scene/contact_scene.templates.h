@@ -5,7 +5,6 @@
 #define dpana_scene_contact_scene_templates_h
 
 #include <dpana/base/exceptions.h>
-#include <dpana/contact/friction_set.h>
 #include <dpana/contact/residual.h>
 #include <dpana/io/fclib.h>
 #include <dpana/output/output.templates.h>
@@ -442,29 +441,10 @@ namespace dpana
 
       // Per-element natural-map residual ||F_j||, F_j = r_j - Pi_K(r_j - rho
       // u~_j), the same measure as the solvers' (residual.h), in MPa.
-      const contact::FrictionSet set(problem_);
-      const double               rho = contact::residual_rho(problem_);
-      summary_.element_residual.assign(n, 0.0);
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          double r[dim], u[dim], x[dim], p[dim], y[dim];
-          for (unsigned int k = 0; k < dim; ++k)
-            {
-              r[k] = res.r(dim * j + k);
-              u[k] = res.u(dim * j + k);
-            }
-          for (unsigned int k = 1; k < dim; ++k)
-            y[k - 1] = -u[k];
-          const double mu = problem_.mu(j);
-          x[0]            = r[0] - rho * (u[0] - mu * set.support(y));
-          for (unsigned int k = 1; k < dim; ++k)
-            x[k] = r[k] - rho * u[k];
-          set.project_cone(mu, x, p);
-          double norm = 0;
-          for (unsigned int k = 0; k < dim; ++k)
-            norm += (r[k] - p[k]) * (r[k] - p[k]);
-          summary_.element_residual[j] = std::sqrt(norm);
-        }
+      const Eigen::VectorXd element_residual =
+        contact::element_residuals(problem_, res.r, res.u);
+      summary_.element_residual.assign(element_residual.begin(),
+                                       element_residual.end());
 
       const double s0     = region_centre * surface.surface_tangents()[0];
       summary_.half_width = summary_.half_width_centroid = 0;
