@@ -144,12 +144,13 @@ namespace dpana
      *
      * The contact elements are those of the first body; the second body's
      * side of element j is the part of its surface that projects, along n,
-     * onto element j. In 3D the two discretisations must match face by face
-     * (same projected centroids and areas). In 2D they need not: the faces
-     * of the second body are cut at the projections of the first body's
-     * vertices (a mortar projection with piecewise constant multipliers on
-     * the first body), which lets a cylinder meshed along its arc rest on a
-     * foundation meshed on a grid, or in a cavity of another radius.
+     * onto element j (a mortar projection with piecewise constant
+     * multipliers on the first body). The two discretisations need not
+     * match: the faces of the second body are cut at the edges of the
+     * projections of the first body's faces (intervals in 2D, triangles
+     * clipped by triangles in 3D). A cylinder meshed along its arc can rest
+     * on a foundation meshed on a grid, or in a cavity of another radius;
+     * matching meshes are the special case of one partner per face.
      */
     template <int dim>
     class ContactSurface
@@ -183,10 +184,9 @@ namespace dpana
        * those of @p first, with its frame negated, and the gap of @p first is
        * set to the normal distance between the two surfaces. Only the faces
        * of @p tria that face the first body (outward normal . n < 0) take
-       * part. In 2D every face of @p first must be covered exactly once by
-       * the projections of these faces; in 3D the faces must match those of
-       * @p first one to one (same projected centroid and area). Throws
-       * dpana::InputError with a one-line message otherwise.
+       * part, whether or not they lie in the candidate region. Every face of
+       * @p first must be covered exactly once by the projections of these
+       * faces; otherwise dpana::InputError with a one-line message.
        */
       void
       pair(const dealii::Triangulation<dim> &tria,
@@ -284,8 +284,6 @@ namespace dpana
       group_greedy(const unsigned int size);
       void
       finish_elements();
-      void
-      pair_matching(ContactSurface<dim> &first);
       void
       pair_projected(ContactSurface<dim> &first);
     };

@@ -493,10 +493,7 @@ namespace dpana
           e.points.clear();
           e.at_open_edge = first.elements[j].at_open_edge;
         }
-      if constexpr (dim == 2)
-        pair_projected(first);
-      else
-        pair_matching(first);
+      pair_projected(first);
 
       // Keep only the faces that some element uses, renumbered.
       {
@@ -541,140 +538,205 @@ namespace dpana
 
 
 
-    // 3D: the faces must match one to one. A face of the second body is the
-    // partner of a face of the first if their centroids coincide in the
-    // tangent plane (to 1e-6 of the face size) and their projected areas
-    // agree; the quadrature point of the partner is its centroid, with the
-    // weight of the first body's point, so the forces on both sides
-    // balance.
-    template <int dim>
-    void
-    ContactSurface<dim>::pair_matching(ContactSurface<dim> &first)
-    {
-      const auto &F1       = first.faces;
-      const auto  n        = first.n_surface;
-      const auto  mismatch = [&](const std::string &what) {
-        throw InputError(
-          "Contact: the candidate surfaces do not match: " + what +
-          " (two-body contact in 3D needs matching meshes on Gamma_c)");
-      };
-      std::vector<unsigned int> partner(F1.size());
-      std::vector<bool>         used(faces.size(), false);
-      for (unsigned int k = 0; k < F1.size(); ++k)
-        {
-          const double tol =
-            1e-6 * (dim == 2 ? F1[k].area : std::sqrt(F1[k].area));
-          const double a1    = F1[k].area * std::abs(F1[k].normal * n);
-          bool         found = false;
-          for (unsigned int m = 0; m < faces.size() && !found; ++m)
-            {
-              if (used[m])
-                continue;
-              auto d = faces[m].centroid - F1[k].centroid;
-              d -= (d * n) * n;
-              const double a2 = faces[m].area * std::abs(faces[m].normal * n);
-              if (d.norm() < tol && std::abs(a2 - a1) < 1e-6 * a1)
-                {
-                  partner[k] = m;
-                  used[m]    = true;
-                  found      = true;
-                }
-            }
-          if (!found)
-            mismatch("the face of " + first.opts.body + " at " +
-                     internal::format_point(F1[k].centroid) +
-                     " has no partner on '" + opts.boundary + "' of " +
-                     opts.body);
-        }
-      for (unsigned int j = 0; j < elements.size(); ++j)
-        {
-          auto &e        = elements[j];
-          e.gap_integral = 0;
-          for (const auto &p1 : first.elements[j].points)
-            {
-              SurfacePoint<dim> p;
-              p.face = partner[p1.face];
-              p.barycentric.fill(1.0 / dim);
-              p.x      = faces[p.face].centroid;
-              p.weight = p1.weight;
-              e.points.push_back(p);
-              e.faces.push_back(p.face);
-              e.gap_integral +=
-                p.weight * ((p.x - p1.x) * first.elements[j].normal);
-            }
-        }
-    }
-
-
-
-    // 2D: a mortar projection along the normal n of each contact element.
-    // Along its tangent tau the projection of a face f of the first body is
-    // the interval [a, b] and that of a face g of the second is [c, d];
-    // their overlap [lo, hi] is a segment on which both faces are straight,
-    // so the shape functions of both bodies and the gap are linear in s
-    // there, and the midpoint rule with weight hi - lo integrates them
-    // exactly. The weights of the first body's side of f add up to b - a,
-    // the projected length of f (its weight), so the forces balance. Each
-    // face of the first body must be covered exactly once (the overlaps add
-    // up to b - a): otherwise the first body's candidate surface reaches
+    // @sect4{The projection of the second body onto the first}
+    //
+    // A mortar projection along the normal n of each contact element, in
+    // the coordinates c = (x . tau_1, ..., x . tau_{dim-1}) of its tangent
+    // plane. The projection of a face f of the first body and that of a
+    // face g of the second overlap in a convex set: an interval in 2D, a
+    // polygon in 3D (the triangle of g clipped by that of f, cut into a fan
+    // of triangles). On each piece both faces are flat, so the shape
+    // functions of both bodies and the gap (x_2 - x_1) . n are linear in c
+    // there, and the centroid rule with the piece's measure as weight
+    // integrates them exactly. The pieces of f add up to the projected
+    // measure of f, its weight on the first body's side, so the forces on
+    // the two sides balance. Each face of the first body must be covered
+    // exactly once: otherwise the first body's candidate surface reaches
     // beyond the second body's, or the second body's surface folds over
-    // itself along n.
+    // itself along n. Matching meshes are the special case where every
+    // face is covered by one partner.
+    namespace internal
+    {
+      using PlanePoint = std::array<double, 2>;
+
+      inline double
+      cross(const PlanePoint &a, const PlanePoint &b, const PlanePoint &c)
+      {
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+      }
+
+      // Sutherland-Hodgman: the part of the convex polygon @p subject
+      // inside the counter-clockwise triangle @p clip.
+      inline std::vector<PlanePoint>
+      clip_by_triangle(std::vector<PlanePoint>          subject,
+                       const std::array<PlanePoint, 3> &clip)
+      {
+        for (unsigned int k = 0; k < 3 && !subject.empty(); ++k)
+          {
+            const auto             &A = clip[k], &B = clip[(k + 1) % 3];
+            std::vector<PlanePoint> kept;
+            for (unsigned int i = 0; i < subject.size(); ++i)
+              {
+                const auto  &P  = subject[i];
+                const auto  &Q  = subject[(i + 1) % subject.size()];
+                const double dP = cross(A, B, P), dQ = cross(A, B, Q);
+                if (dP >= 0)
+                  kept.push_back(P);
+                if ((dP >= 0) != (dQ >= 0))
+                  {
+                    const double t = dP / (dP - dQ);
+                    kept.push_back(
+                      {{P[0] + t * (Q[0] - P[0]), P[1] + t * (Q[1] - P[1])}});
+                  }
+              }
+            subject = kept;
+          }
+        return subject;
+      }
+    } // namespace internal
+
+
+
     template <int dim>
     void
     ContactSurface<dim>::pair_projected(ContactSurface<dim> &first)
     {
+      using internal::PlanePoint;
       for (unsigned int j = 0; j < elements.size(); ++j)
         {
-          auto       &e        = elements[j];
-          const auto &e1       = first.elements[j];
-          const auto  tau      = e1.tangents[0];
-          const auto  interval = [&](const Face<dim> &F) {
-            const double s0 = F.points[0] * tau, s1 = F.points[1] * tau;
-            return std::make_pair(std::min(s0, s1), std::max(s0, s1));
+          auto       &e  = elements[j];
+          const auto &e1 = first.elements[j];
+
+          // The vertices of a face in the tangent plane of element j (in
+          // 3D ordered counter-clockwise), and its projected measure.
+          const auto project = [&](const Face<dim> &F) {
+            std::vector<PlanePoint> c(F.points.size(), PlanePoint{{0, 0}});
+            for (unsigned int v = 0; v < F.points.size(); ++v)
+              for (unsigned int k = 0; k < dim - 1; ++k)
+                c[v][k] = F.points[v] * e1.tangents[k];
+            return c;
           };
-          // The point of face F at tangential coordinate s and its
-          // barycentric coordinates.
-          const auto at = [&](const Face<dim> &F, const double s) {
-            const double s0 = F.points[0] * tau, s1 = F.points[1] * tau;
-            const double t = (s - s0) / (s1 - s0);
-            return std::make_pair(std::array<double, dim>{{1 - t, t}},
-                                  dealii::Point<dim>(
-                                    F.points[0] +
-                                    t * (F.points[1] - F.points[0])));
+          const auto measure = [](const std::vector<PlanePoint> &c) {
+            return dim == 2 ? std::abs(c[1][0] - c[0][0]) :
+                              0.5 * std::abs(internal::cross(c[0], c[1], c[2]));
           };
+          // Barycentric coordinates of the plane point c in the projected
+          // face and the point of the face there.
+          const auto at = [](const Face<dim>               &F,
+                             const std::vector<PlanePoint> &P,
+                             const PlanePoint              &c) {
+            std::array<double, dim> lambda;
+            if constexpr (dim == 2)
+              {
+                lambda[1] = (c[0] - P[0][0]) / (P[1][0] - P[0][0]);
+                lambda[0] = 1 - lambda[1];
+              }
+            else
+              {
+                const double det = internal::cross(P[0], P[1], P[2]);
+                lambda[1]        = internal::cross(P[0], c, P[2]) / det;
+                lambda[2]        = internal::cross(P[0], P[1], c) / det;
+                lambda[0]        = 1 - lambda[1] - lambda[2];
+              }
+            dealii::Point<dim> x;
+            for (unsigned int v = 0; v < dim; ++v)
+              x += lambda[v] * F.points[v];
+            return std::make_pair(lambda, x);
+          };
+          // The pieces of the overlap of two projected faces: measure and
+          // centroid of each.
+          const auto overlap = [](const std::vector<PlanePoint> &P,
+                                  const std::vector<PlanePoint> &Q) {
+            std::vector<std::pair<double, PlanePoint>> pieces;
+            if constexpr (dim == 2)
+              {
+                const double lo = std::max(std::min(P[0][0], P[1][0]),
+                                           std::min(Q[0][0], Q[1][0]));
+                const double hi = std::min(std::max(P[0][0], P[1][0]),
+                                           std::max(Q[0][0], Q[1][0]));
+                if (hi > lo)
+                  pieces.push_back({hi - lo, PlanePoint{{0.5 * (lo + hi), 0}}});
+              }
+            else
+              {
+                std::array<PlanePoint, 3> clip = {{P[0], P[1], P[2]}};
+                if (internal::cross(P[0], P[1], P[2]) < 0)
+                  std::swap(clip[1], clip[2]);
+                std::vector<PlanePoint> subject(Q.begin(), Q.end());
+                if (internal::cross(Q[0], Q[1], Q[2]) < 0)
+                  std::swap(subject[1], subject[2]);
+                const auto poly = internal::clip_by_triangle(subject, clip);
+                for (unsigned int i = 1; i + 1 < poly.size(); ++i)
+                  {
+                    const double a =
+                      0.5 * internal::cross(poly[0], poly[i], poly[i + 1]);
+                    if (a > 0)
+                      pieces.push_back(
+                        {a,
+                         PlanePoint{
+                           {(poly[0][0] + poly[i][0] + poly[i + 1][0]) / 3,
+                            (poly[0][1] + poly[i][1] + poly[i + 1][1]) / 3}}});
+                  }
+              }
+            return pieces;
+          };
+
+          std::vector<std::vector<PlanePoint>> Q(faces.size());
+          std::vector<std::array<double, 4>>   box(faces.size());
+          for (unsigned int g = 0; g < faces.size(); ++g)
+            {
+              Q[g]   = project(faces[g]);
+              box[g] = {{Q[g][0][0], Q[g][0][0], Q[g][0][1], Q[g][0][1]}};
+              for (const auto &c : Q[g])
+                box[g] = {{std::min(box[g][0], c[0]),
+                           std::max(box[g][1], c[0]),
+                           std::min(box[g][2], c[1]),
+                           std::max(box[g][3], c[1])}};
+            }
+
           e.gap_integral = 0;
           for (const unsigned int f : e1.faces)
             {
-              const auto  &F1 = first.faces[f];
-              const auto   ab = interval(F1);
-              const double a = ab.first, b = ab.second;
-              double       covered = 0;
+              const auto  &F1   = first.faces[f];
+              const auto   P    = project(F1);
+              const double m1   = measure(P);
+              double       b[4] = {P[0][0], P[0][0], P[0][1], P[0][1]};
+              for (const auto &c : P)
+                {
+                  b[0] = std::min(b[0], c[0]);
+                  b[1] = std::max(b[1], c[0]);
+                  b[2] = std::min(b[2], c[1]);
+                  b[3] = std::max(b[3], c[1]);
+                }
+              double covered = 0;
               for (unsigned int g = 0; g < faces.size(); ++g)
                 {
-                  const auto   cd = interval(faces[g]);
-                  const double lo = std::max(a, cd.first),
-                               hi = std::min(b, cd.second);
-                  if (!(hi - lo > 1e-12 * (b - a)))
+                  if (box[g][0] >= b[1] || box[g][1] <= b[0] ||
+                      (dim == 3 && (box[g][2] >= b[3] || box[g][3] <= b[2])))
                     continue;
-                  const double      s = 0.5 * (lo + hi);
-                  SurfacePoint<dim> p;
-                  p.face                       = g;
-                  std::tie(p.barycentric, p.x) = at(faces[g], s);
-                  p.weight                     = hi - lo;
-                  e.points.push_back(p);
-                  if (std::find(e.faces.begin(), e.faces.end(), g) ==
-                      e.faces.end())
-                    e.faces.push_back(g);
-                  e.gap_integral +=
-                    p.weight * ((p.x - at(F1, s).second) * e1.normal);
-                  covered += hi - lo;
+                  for (const auto &[w, c] : overlap(P, Q[g]))
+                    {
+                      if (!(w > 1e-12 * m1))
+                        continue;
+                      SurfacePoint<dim> p;
+                      p.face                       = g;
+                      std::tie(p.barycentric, p.x) = at(faces[g], Q[g], c);
+                      p.weight                     = w;
+                      e.points.push_back(p);
+                      if (std::find(e.faces.begin(), e.faces.end(), g) ==
+                          e.faces.end())
+                        e.faces.push_back(g);
+                      e.gap_integral +=
+                        w * ((p.x - at(F1, P, c).second) * e1.normal);
+                      covered += w;
+                    }
                 }
-              if (std::abs(covered - (b - a)) > 1e-9 * (b - a))
+              if (std::abs(covered - m1) > 1e-9 * m1)
                 throw InputError(
                   "Contact: the face of " + first.opts.body + " at " +
                   internal::format_point(F1.centroid) + " is " +
-                  (covered < b - a ? "not covered by" :
-                                     "covered more than once by") +
+                  (covered < m1 ? "not covered by" :
+                                  "covered more than once by") +
                   " the projection of '" + opts.boundary + "' of " + opts.body +
                   " along the contact direction (enlarge the boundary of " +
                   opts.body + " or reduce Contact / Candidate half width)");

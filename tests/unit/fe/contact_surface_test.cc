@@ -295,9 +295,162 @@ TEST(ContactSurface, ProjectedGapOfArcOnPlane)
 
 
 
-// In 3D the two discretisations must match: a box base of 4 x 2 cells on a
-// foundation top of 3 x 2 cells is refused with one line.
-TEST(ContactSurface, NonMatchingPairIsRefusedIn3D)
+// Patch test of the projection in 3D: the stacked boxes [0, 8] x [0, 4] x
+// [0, 8] (4 x 2 x 4 cells) on [0, 8] x [-4, 0] x [0, 8] (3 x 2 x 3 cells:
+// the interface triangles do not match), symmetry on x = 0 and z = 0,
+// 50 MPa on the top, 100 MPa on the sides x = 8 and z = 8 of both, the
+// base of the foundation held vertically. The uniform stress sigma_xx =
+// sigma_zz = -100, sigma_yy = -50 MPa is the exact solution in both bodies
+// (linear displacement, exact for P1), so every element carries N = -50,
+// T = 0 up to round-off, and each column of V adds up to +-16 mm^2, the
+// element's area (2 x 2 cells of 2 x 2 mm).
+TEST(ContactSurface, NonMatchingPatchTest3D)
+{
+  const auto body = [](const std::string &name,
+                       const std::string &lower,
+                       const std::string &upper,
+                       const std::string &cells,
+                       const std::string &conditions,
+                       const std::string &loads) {
+    return "subsection " + name +
+           "\n"
+           "  subsection Geometry\n"
+           "    set Type = box\n"
+           "    set Lower corner = " +
+           lower + "\n    set Upper corner = " + upper +
+           "\n    set Subdivisions = " + cells +
+           "\n"
+           "  end\n"
+           "  subsection Boundary conditions\n" +
+           conditions +
+           "  end\n"
+           "  subsection Loads\n" +
+           loads +
+           "  end\n"
+           "end\n";
+  };
+  const std::string text =
+    "set Dimension = 3\n"
+    "set Number of bodies = 2\n" +
+    body("Body 1",
+         "0, 0, 0",
+         "8, 4, 8",
+         "4, 2, 4",
+         "    set Symmetry = left; front\n",
+         "    set Pressure = top: 50; right: 100; back: 100\n") +
+    body("Body 2",
+         "0, -4, 0",
+         "8, 0, 8",
+         "3, 2, 3",
+         "    set Symmetry = left; front\n    set Fixed = bottom: y\n",
+         "    set Pressure = right: 100; back: 100\n") +
+    "subsection Contact\n"
+    "  set Boundary 1 = bottom\n"
+    "  set Boundary 2 = top\n"
+    "  set Contact direction = 0, -1, 0\n"
+    "  set Friction coefficient = 0\n"
+    "end\n";
+  auto s = make_scene<3>(text, 2);
+  s->run(false);
+  ASSERT_TRUE(s->summary().result.converged);
+  ASSERT_EQ(s->summary().n_elements, 4u);
+  for (unsigned int j = 0; j < s->summary().n_elements; ++j)
+    {
+      EXPECT_NEAR(s->normal_traction(j), -50.0, 50.0 * 1e-9) << j;
+      for (unsigned int k = 0; k < 2; ++k)
+        EXPECT_NEAR(s->tangential_traction(j, k), 0.0, 50.0 * 1e-9) << j;
+      EXPECT_NEAR(s->surface(0).element(j).mean_gap(), 0.0, 1e-12);
+    }
+  for (unsigned int b = 0; b < 2; ++b)
+    {
+      const auto &V = s->condenser(b).coupling();
+      for (unsigned int j = 0; j < s->surface(b).n_elements(); ++j)
+        {
+          const auto  &e = s->surface(b).element(j);
+          const double sum =
+            Eigen::VectorXd(V.col(3 * j)).sum(); // unit traction along n
+          EXPECT_NEAR(sum,
+                      16.0 * (e.normal[0] + e.normal[1] + e.normal[2]),
+                      1e-12)
+            << "body " << b << " element " << j;
+        }
+    }
+}
+
+
+
+// The 3D version of ProjectedGapOfArcOnPlane: a half cylinder of radius 40
+// and length 8 on the top y = 0 of a box meshed independently (7 x 3 cells
+// on its top). The gaps from the projection (the arc's triangles clipped by
+// the box's) must equal those of the rigid plane y = 0 computed face by
+// face, which checks the barycentric coordinates on the curved side.
+TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
+{
+  const std::string cylinder = "subsection Body 1\n"
+                               "  subsection Geometry\n"
+                               "    set Type = half cylinder\n"
+                               "    set Radius = 40\n"
+                               "    set Centre = 0, 40, 0\n"
+                               "    set Length = 8\n"
+                               "    set Axial subdivisions = 2\n"
+                               "    set Global refinements = 1\n"
+                               "    set Contact refinements = 1\n"
+                               "    set Contact refinement radius = 10\n"
+                               "  end\n"
+                               "  subsection Boundary conditions\n"
+                               "    set Fixed = top: x, y, z\n"
+                               "  end\n"
+                               "end\n";
+  const std::string contact  = "subsection Contact\n"
+                               "  set Boundary 1 = curved\n"
+                               "  set Boundary 2 = top\n"
+                               "  set Candidate centre = 0, 0, 4\n"
+                               "  set Candidate half width = 12\n"
+                               "  set Contact direction = 0, -1, 0\n"
+                               "end\n";
+  auto one = make_scene<3>("set Dimension = 3\n" + cylinder + contact, 1);
+  one->setup_bodies();
+  one->setup_surfaces();
+  auto two =
+    make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" + cylinder +
+                    "subsection Body 2\n"
+                    "  subsection Geometry\n"
+                    "    set Type = box\n"
+                    "    set Lower corner = -30, -10, 0\n"
+                    "    set Upper corner = 30, 0, 8\n"
+                    "    set Subdivisions = 7, 2, 3\n"
+                    "  end\n"
+                    "  subsection Boundary conditions\n"
+                    "    set Fixed = bottom: x, y, z\n"
+                    "  end\n"
+                    "end\n" +
+                    contact,
+                  2);
+  two->setup_bodies();
+  two->setup_surfaces();
+  const auto &rigid = one->surface(0), &paired = two->surface(0);
+  ASSERT_EQ(rigid.n_elements(), paired.n_elements());
+  double largest = 0;
+  for (unsigned int j = 0; j < rigid.n_elements(); ++j)
+    {
+      largest = std::max(largest, rigid.element(j).gap_integral);
+      EXPECT_NEAR(paired.element(j).gap_integral,
+                  rigid.element(j).gap_integral,
+                  1e-12 * 12 * 12 * 12)
+        << "element " << j;
+      EXPECT_NEAR(two->surface(1).element(j).area,
+                  rigid.element(j).area,
+                  1e-12 * 12 * 12);
+    }
+  EXPECT_GT(largest, 0.0);
+}
+
+
+
+// The candidate surface of the first body must lie over the second body:
+// a box base of 8 x 4 mm on a foundation top of 8 x 3 mm is refused with
+// one line.
+TEST(ContactSurface, UncoveredSurfaceIsRefusedIn3D)
 {
   const std::string text = "set Dimension = 3\n"
                            "set Number of bodies = 2\n"
@@ -316,7 +469,7 @@ TEST(ContactSurface, NonMatchingPairIsRefusedIn3D)
                            "  subsection Geometry\n"
                            "    set Type = box\n"
                            "    set Lower corner = 0, -2, 0\n"
-                           "    set Upper corner = 8, 0, 4\n"
+                           "    set Upper corner = 8, 0, 3\n"
                            "    set Subdivisions = 3, 1, 2\n"
                            "  end\n"
                            "  subsection Boundary conditions\n"
@@ -331,12 +484,12 @@ TEST(ContactSurface, NonMatchingPairIsRefusedIn3D)
   try
     {
       s->setup_surfaces();
-      FAIL() << "non-matching surfaces were accepted";
+      FAIL() << "an uncovered candidate surface was accepted";
     }
   catch (const InputError &e)
     {
       const std::string what = e.what();
-      EXPECT_NE(what.find("do not match"), std::string::npos) << what;
+      EXPECT_NE(what.find("is not covered by"), std::string::npos) << what;
       EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }
 }
