@@ -99,26 +99,25 @@ main(int argc, char **argv)
           return 1;
         }
 
+      // The one pre-scan of the file: dimension, number of bodies, and
+      // whether it describes a contact run.
+      const dpana::parameters::FileOutline outline =
+        filename.empty() ? dpana::parameters::FileOutline() :
+                           dpana::parameters::scan_file(filename);
+
       // Contact runs have their own driver (bodies, condensation, contact
       // solver, recovery, output) and their own parameter set.
-      if (!filename.empty() && dpana::scene::is_contact_file(filename))
+      if (outline.has_contact)
         {
           if (!print_parameters)
-            return dpana::scene::run_contact(filename);
+            return dpana::scene::run_contact(filename, outline);
           dealii::ParameterHandler prm;
-          const unsigned int dim = dpana::parameters::read_dimension(filename);
-          dealii::ParameterHandler pre;
-          pre.declare_entry("Dimension", "2");
-          pre.declare_entry("Number of bodies",
-                            "1",
-                            dealii::Patterns::Integer(1, 2));
-          pre.parse_input(filename, "", true);
           dpana::scene::declare_parameters(prm,
-                                           dim,
-                                           pre.get_integer("Number of bodies"));
+                                           outline.dimension,
+                                           outline.n_bodies);
           dpana::parameters::parse_file(prm, filename);
-          std::cout << "# dpana contact parameter file (Dimension = " << dim
-                    << "); units: mm, N, MPa\n";
+          std::cout << "# dpana contact parameter file (Dimension = "
+                    << outline.dimension << "); units: mm, N, MPa\n";
           prm.print_parameters(
             std::cout,
             dealii::ParameterHandler::PRM |
@@ -126,10 +125,8 @@ main(int argc, char **argv)
           return 0;
         }
 
-      const unsigned int dim =
-        filename.empty() ? 2 : dpana::parameters::read_dimension(filename);
-      return dim == 2 ? run<2>(filename, print_parameters) :
-                        run<3>(filename, print_parameters);
+      return outline.dimension == 2 ? run<2>(filename, print_parameters) :
+                                      run<3>(filename, print_parameters);
     }
   catch (const std::exception &e)
     {

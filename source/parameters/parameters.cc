@@ -6,6 +6,7 @@
 #include <dpana/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <fstream>
 #include <regex>
@@ -52,47 +53,78 @@ namespace dpana
 
 
 
-    unsigned int
-    read_dimension(const std::string &filename)
+    // The top level of the file is read line by line; a subsection counter
+    // tells the top-level lines from the others. The values are checked
+    // here because they decide what is declared: a wrong dimension would
+    // otherwise surface as a confusing list of undeclared entries.
+    FileOutline
+    scan_file(const std::string &filename)
     {
       std::ifstream in(filename);
       if (!in)
         throw InputError("cannot read parameter file '" + filename + "'");
-      std::string  line;
-      int          depth = 0;
-      unsigned int dim   = 2;
-      while (std::getline(in, line))
+      // "a.prm, line 12: ", as in the messages of parse_file().
+      const auto where = [&filename](const unsigned int n) {
+        return filename + ", line " + std::to_string(n) + ": ";
+      };
+      FileOutline  outline;
+      std::string  line, piece;
+      unsigned int depth = 0, line_number = 0, first_line = 1;
+      while (std::getline(in, piece))
         {
+          ++line_number;
+          if (line.empty())
+            first_line = line_number;
+          // A line ending in a backslash continues on the next one.
+          line += dealii::Utilities::trim(piece);
+          if (!line.empty() && line.back() == '\\')
+            {
+              line.pop_back();
+              continue;
+            }
           std::istringstream words(strip_comment(line));
-          std::string        first;
+          line.clear();
+          std::string first;
           if (!(words >> first))
             continue;
-          if (first == "subsection")
-            ++depth;
-          else if (first == "end")
-            --depth;
-          else if (first == "set" && depth == 0)
+          std::string rest;
+          std::getline(words, rest);
+          if (first == "subsection" || first == "SUBSECTION")
             {
-              std::string rest;
-              std::getline(words, rest);
+              if (depth == 0 && collapse_whitespace(rest) == "Contact")
+                outline.has_contact = true;
+              ++depth;
+            }
+          else if ((first == "end" || first == "END") && depth > 0)
+            --depth;
+          else if ((first == "set" || first == "SET") && depth == 0)
+            {
               const auto equal = rest.find('=');
               if (equal == std::string::npos)
                 continue;
-              if (collapse_whitespace(rest.substr(0, equal)) != "Dimension")
-                continue;
+              const std::string name =
+                collapse_whitespace(rest.substr(0, equal));
               const std::string value =
                 collapse_whitespace(rest.substr(equal + 1));
-              if (value == "2")
-                dim = 2;
-              else if (value == "3")
-                dim = 3;
-              else
-                throw InputError(filename +
-                                 ": Dimension: must be 2 or 3, got '" + value +
-                                 "'");
+              if (name == "Dimension")
+                {
+                  if (value != "2" && value != "3")
+                    throw InputError(where(first_line) +
+                                     "Dimension: must be 2 or 3, got '" +
+                                     value + "'");
+                  outline.dimension = value == "2" ? 2 : 3;
+                }
+              else if (name == "Number of bodies")
+                {
+                  if (value != "1" && value != "2")
+                    throw InputError(where(first_line) +
+                                     "Number of bodies: must be 1 or 2, got '" +
+                                     value + "'");
+                  outline.n_bodies = value == "1" ? 1 : 2;
+                }
             }
         }
-      return dim;
+      return outline;
     }
 
 

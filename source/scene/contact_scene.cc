@@ -6,7 +6,6 @@
 
 #include <deal.II/base/patterns.h>
 
-#include <fstream>
 #include <iostream>
 
 namespace dpana
@@ -18,42 +17,13 @@ namespace dpana
 
 
 
-    bool
-    is_contact_file(const std::string &prm_file)
-    {
-      std::ifstream in(prm_file);
-      std::string   line;
-      unsigned int  depth = 0;
-      while (std::getline(in, line))
-        {
-          const auto words = dealii::Utilities::split_string_list(
-            dealii::Utilities::trim(line.substr(0, line.find('#'))), ' ');
-          if (words.empty())
-            continue;
-          if (words[0] == "subsection")
-            {
-              if (depth == 0 && words.size() >= 2 && words[1] == "Contact")
-                return true;
-              ++depth;
-            }
-          else if (words[0] == "end" && depth > 0)
-            --depth;
-        }
-      return false;
-    }
-
-
-
     void
     declare_parameters(dealii::ParameterHandler &prm,
                        const unsigned int        dim,
                        const unsigned int        n_bodies)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry("Dimension",
-                        "2",
-                        Integer(2, 3),
-                        "Space dimension of the contact run (2: plane, 3).");
+      parameters::declare_dimension(prm);
       prm.declare_entry("Number of bodies",
                         "1",
                         Integer(1, 2),
@@ -261,34 +231,13 @@ namespace dpana
 
 
     int
-    run_contact(const std::string &prm_file)
+    run_contact(const std::string             &prm_file,
+                const parameters::FileOutline &outline)
     {
       try
         {
-          if (!std::ifstream(prm_file))
-            throw InputError("cannot open the parameter file '" + prm_file +
-                             "'");
-          // First pass: only the dimension and the number of bodies, which
-          // decide what the full set of parameters is.
-          dealii::ParameterHandler pre;
-          pre.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3));
-          pre.declare_entry("Number of bodies",
-                            "1",
-                            dealii::Patterns::Integer(1, 2));
-          try
-            {
-              pre.parse_input(prm_file, "", true);
-            }
-          catch (const std::exception &e)
-            {
-              throw InputError(prm_file + ": " +
-                               parameters::one_line_message(e) +
-                               " (parameters Dimension, Number of bodies)");
-            }
-          const unsigned int dim      = pre.get_integer("Dimension");
-          const unsigned int n_bodies = pre.get_integer("Number of bodies");
-          return dim == 2 ? run<2>(prm_file, n_bodies) :
-                            run<3>(prm_file, n_bodies);
+          return outline.dimension == 2 ? run<2>(prm_file, outline.n_bodies) :
+                                          run<3>(prm_file, outline.n_bodies);
         }
       catch (const InputError &e)
         {

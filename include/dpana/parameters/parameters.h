@@ -14,14 +14,34 @@ namespace dpana
   namespace parameters
   {
     /**
-     * The space dimension of a parameter file: the value of the top-level
-     * entry "set Dimension = 2|3" (2 if absent). It has to be known before
-     * the other entries are declared, because the bodies are templates on
-     * the dimension. Throws dpana::InputError if the file cannot be read or
-     * the value is not 2 or 3.
+     * What must be known of a parameter file before its entries can be
+     * declared: the bodies are templates on the space dimension, a contact
+     * run declares one subsection per body, and a file with a top-level
+     * `subsection Contact` is a contact run (dpana::scene) rather than an
+     * elastic run of one body (dpana::Simulation).
      */
-    unsigned int
-    read_dimension(const std::string &filename);
+    struct FileOutline
+    {
+      // Top-level "set Dimension = 2|3" (2 if absent).
+      unsigned int dimension = 2;
+      // Top-level "set Number of bodies = 1|2" (1 if absent).
+      unsigned int n_bodies = 1;
+      // True if the file has a top-level "subsection Contact".
+      bool has_contact = false;
+    };
+
+    /**
+     * The one pre-scan of a parameter file: reads its top level (the lines
+     * outside any subsection, with the ParameterHandler's syntax: '#'
+     * starts a comment unless escaped, a trailing backslash continues the
+     * line) for FileOutline. Everything else is left to parse_file(), which
+     * reads the file with all entries declared. Throws dpana::InputError if
+     * the file cannot be read, or if Dimension is not 2 or 3 or Number of
+     * bodies not 1 or 2 (message "a.prm, line 3: Dimension: must be 2 or 3,
+     * got '4'").
+     */
+    FileOutline
+    scan_file(const std::string &filename);
 
     /**
      * Declares the top-level entry "Dimension".

@@ -8,6 +8,7 @@
 #include <dpana/condensation/condenser.h>
 #include <dpana/contact/solver.h>
 #include <dpana/contact_surface/contact_surface.h>
+#include <dpana/parameters/parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -25,14 +26,6 @@ namespace dpana
   namespace scene
   {
     /**
-     * True if the parameter file @p prm_file has a top-level
-     * `subsection Contact`: such a file describes a contact run and is
-     * handed to run_contact().
-     */
-    bool
-    is_contact_file(const std::string &prm_file);
-
-    /**
      * Declare every parameter of a contact run: the top-level entries
      * `Dimension` and `Number of bodies`, the subsections `Body 1` (and
      * `Body 2`) of Body<dim>, and the subsection `Contact` (candidate
@@ -44,17 +37,19 @@ namespace dpana
                        const unsigned int        n_bodies);
 
     /**
-     * Run the contact scene of @p prm_file: read the dimension and the
-     * number of bodies, then build the bodies, condense them on the
-     * candidate contact surface, solve the contact problem, recover the
-     * displacements and stresses and write the output. Errors in the input
-     * are printed as one line "dpana: error: ..." on std::cerr. Returns the
-     * exit status: 0 on success (even if the contact solver did not
-     * converge: that is reported in the log and the JSON summary), 1 on an
-     * input error.
+     * Run the contact scene of @p prm_file, whose dimension and number of
+     * bodies the pre-scan parameters::scan_file() has read into
+     * @p outline: build the bodies, condense them on the candidate contact
+     * surface, solve the contact problem, recover the displacements and
+     * stresses and write the output. Errors in the input are printed as one
+     * line "dpana: error: ..." on std::cerr. Returns the exit status: 0 on
+     * success, 1 on an input error, exit_not_converged if the contact
+     * solver did not converge (the output is written and marked as such)
+     * and `Contact / Allow non-converged` is false.
      */
     int
-    run_contact(const std::string &prm_file);
+    run_contact(const std::string             &prm_file,
+                const parameters::FileOutline &outline);
 
     /**
      * Exit status of a run whose contact solver did not converge (and
