@@ -235,10 +235,7 @@ TEST(ContactRun, HertzRigidFoundationConvergence)
       ASSERT_TRUE(s->summary().result.converged);
       a.push_back(s->summary().half_width);
       N.push_back(s->summary().max_pressure);
-      double size = 0;
-      for (const auto &e : s->surface(0).get_elements())
-        if (e.s_min < a.back())
-          size = std::max(size, e.s_max - e.s_min);
+      const double size = dpana::test::contact_element_size(*s);
       h.push_back(size);
       std::cout << "Hertz rigid, mu = 0, contact refinements " << m
                 << ": a = " << a.back() << " mm (element " << size
@@ -335,29 +332,14 @@ TEST(ContactRun, CandidateEdgeWarning)
 // extent in x (5 mm), and the row z = 0 of the 3D elements is compared.
 TEST(ContactRun, Block3DNuZeroMatches2D)
 {
-  const std::string common_2d = "set Dimension = 2\n"
-                                "subsection Body 1\n"
-                                "  subsection Geometry\n"
-                                "    set Type = rectangle\n"
-                                "    set Lower corner = 0, 0\n"
-                                "    set Upper corner = 40, 40\n"
-                                "    set Subdivisions = 16, 8\n"
-                                "  end\n"
-                                "  subsection Material\n"
-                                "    set Poisson's ratio = 0\n"
-                                "  end\n"
-                                "  subsection Boundary conditions\n"
-                                "    set Symmetry = left\n"
-                                "  end\n"
-                                "  subsection Loads\n"
-                                "    set Pressure = top: 50; right: 100\n"
-                                "  end\n"
-                                "end\n"
-                                "subsection Contact\n"
-                                "  set Boundary 1 = bottom\n"
-                                "  set Contact direction = 0, -1\n"
-                                "  set Friction coefficient = 1\n"
-                                "end\n";
+  const std::string common_2d =
+    "set Dimension = 2\n" +
+    dpana::test::receding_block(16, 8, "    set Poisson's ratio = 0\n") +
+    "subsection Contact\n"
+    "  set Boundary 1 = bottom\n"
+    "  set Contact direction = 0, -1\n"
+    "  set Friction coefficient = 1\n"
+    "end\n";
   const std::string common_3d = "set Dimension = 3\n"
                                 "subsection Body 1\n"
                                 "  subsection Geometry\n"

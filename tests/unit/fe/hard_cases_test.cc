@@ -31,38 +31,31 @@ namespace
                                             "nsgs",
                                             "alart_curnier"};
 
-  // The receding block of seed 000, section 4.2.1 (half model 40 x 40,
-  // 16 x 16 cells, 50 MPa on top, 100 MPa on the side, rigid foundation)
-  // with Poisson's ratio nu, friction coefficient mu, contact solver
-  // `solver`.
+  using dpana::test::receding_block;
+
+  // The contact subsection: candidate surface the base, contact direction
+  // (0, -1), friction coefficient mu, contact solver `solver`; `extra`
+  // holds more entries.
   std::string
-  block_prm(const double nu, const double mu, const std::string &solver)
+  contact(const double mu, const std::string &solver, const std::string &extra)
   {
-    return "set Dimension = 2\n"
-           "subsection Body 1\n"
-           "  subsection Geometry\n"
-           "    set Upper corner = 40, 40\n"
-           "    set Subdivisions = 16, 16\n"
-           "  end\n"
-           "  subsection Material\n"
-           "    set Poisson's ratio = " +
-           std::to_string(nu) +
-           "\n"
-           "  end\n"
-           "  subsection Boundary conditions\n"
-           "    set Symmetry = left\n"
-           "  end\n"
-           "  subsection Loads\n"
-           "    set Pressure = top: 50; right: 100\n"
-           "  end\n"
-           "end\n"
-           "subsection Contact\n"
+    return "subsection Contact\n"
            "  set Boundary 1 = bottom\n"
            "  set Contact direction = 0, -1\n"
            "  set Friction coefficient = " +
-           std::to_string(mu) + "\n  set Solver = " + solver +
-           "\n"
+           std::to_string(mu) + "\n  set Solver = " + solver + "\n" + extra +
            "end\n";
+  }
+
+  // The receding block of seed 000, section 4.2.1 (16 x 16 cells, rigid
+  // foundation) with Poisson's ratio nu.
+  std::string
+  block_prm(const double nu, const double mu, const std::string &solver)
+  {
+    return "set Dimension = 2\n" +
+           receding_block(
+             16, 16, "    set Poisson's ratio = " + std::to_string(nu) + "\n") +
+           contact(mu, solver, "");
   }
 
   // The block of section 4.2.3 on an elastic foundation (half model
@@ -72,24 +65,9 @@ namespace
   two_body_prm(const double E1, const double E2, const std::string &solver)
   {
     return "set Dimension = 2\n"
-           "set Number of bodies = 2\n"
-           "subsection Body 1\n"
-           "  subsection Geometry\n"
-           "    set Upper corner = 40, 40\n"
-           "    set Subdivisions = 16, 16\n"
-           "  end\n"
-           "  subsection Material\n"
-           "    set Young's modulus = " +
-           std::to_string(E1) +
-           "\n"
-           "  end\n"
-           "  subsection Boundary conditions\n"
-           "    set Symmetry = left\n"
-           "  end\n"
-           "  subsection Loads\n"
-           "    set Pressure = top: 50; right: 100\n"
-           "  end\n"
-           "end\n"
+           "set Number of bodies = 2\n" +
+           receding_block(
+             16, 16, "    set Young's modulus = " + std::to_string(E1) + "\n") +
            "subsection Body 2\n"
            "  subsection Geometry\n"
            "    set Lower corner = 0, -80\n"
@@ -105,18 +83,12 @@ namespace
            "    set Symmetry = left\n"
            "    set Fixed = bottom: x, y\n"
            "  end\n"
-           "end\n"
-           "subsection Contact\n"
-           "  set Boundary 1 = bottom\n"
-           "  set Boundary 2 = top\n"
-           "  set Candidate centre = 0, 0\n"
-           "  set Candidate half width = 40\n"
-           "  set Contact direction = 0, -1\n"
-           "  set Friction coefficient = 1\n"
-           "  set Solver = " +
-           solver +
-           "\n"
-           "end\n";
+           "end\n" +
+           contact(1,
+                   solver,
+                   "  set Boundary 2 = top\n"
+                   "  set Candidate centre = 0, 0\n"
+                   "  set Candidate half width = 40\n");
   }
 
   // Runs `text` with every solver: each must converge, and the tractions

@@ -184,10 +184,7 @@ TEST(HertzTwoBody, CylinderInCavityConverges)
       ASSERT_TRUE(s->summary().result.converged);
       a.push_back(s->summary().half_width);
       N.push_back(s->summary().max_pressure);
-      double size = 0;
-      for (const auto &e : s->surface(0).get_elements())
-        if (e.s_min < a.back())
-          size = std::max(size, e.s_max - e.s_min);
+      const double size = dpana::test::contact_element_size(*s);
       h.push_back(size);
       std::cout << "Cylinder in cavity, contact refinements " << m
                 << ": a = " << a.back() << " mm (element " << size

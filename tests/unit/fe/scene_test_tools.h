@@ -7,6 +7,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -25,6 +26,54 @@ namespace dpana
       s->parse_parameters(prm, n_bodies);
       s->set_quiet(true);
       return s;
+    }
+
+    /**
+     * Body 1 of the 2D receding scene (seed 000, section 4.2.1): the half
+     * model [0, 40] x [0, 40] with @p nx x @p ny cells, symmetric on x = 0,
+     * 50 MPa on the top and 100 MPa on the right side. @p material holds
+     * entries of its Material subsection ("set Poisson's ratio = 0\n").
+     */
+    inline std::string
+    receding_block(const unsigned int nx,
+                   const unsigned int ny,
+                   const std::string &material)
+    {
+      return "subsection Body 1\n"
+             "  subsection Geometry\n"
+             "    set Type = rectangle\n"
+             "    set Lower corner = 0, 0\n"
+             "    set Upper corner = 40, 40\n"
+             "    set Subdivisions = " +
+             std::to_string(nx) + ", " + std::to_string(ny) +
+             "\n"
+             "  end\n"
+             "  subsection Material\n" +
+             material +
+             "  end\n"
+             "  subsection Boundary conditions\n"
+             "    set Symmetry = left\n"
+             "  end\n"
+             "  subsection Loads\n"
+             "    set Pressure = top: 50; right: 100\n"
+             "  end\n"
+             "end\n";
+    }
+
+    /**
+     * The size of the contact elements at the edge of the contact zone: the
+     * largest tangential extent of the elements that begin inside it. The
+     * half width a is known to this size (the element that ends the zone).
+     */
+    template <int dim>
+    double
+    contact_element_size(const scene::ContactScene<dim> &s)
+    {
+      double size = 0;
+      for (const auto &e : s.surface(0).get_elements())
+        if (e.s_min < s.summary().half_width)
+          size = std::max(size, e.s_max - e.s_min);
+      return size;
     }
 
     /**
