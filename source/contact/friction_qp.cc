@@ -1,7 +1,8 @@
 #include <dpana/contact/friction_qp.h>
 #include <dpana/contact/method_of_multipliers.h>
 
-#include <Eigen/LU>
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
@@ -221,10 +222,7 @@ namespace dpana
         }
 
       Eigen::VectorXd F(q + me), Ftrial(q + me), dx(q + me), Ttrial(q),
-        btrial(me), v(q), rhs_reduced;
-      std::vector<unsigned int>            free_blocks;
-      std::vector<double>                  derivatives(m * m * n);
-      Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+        btrial(me), v(q);
       const double e_norm   = (me > 0) ? e.lpNorm<Eigen::Infinity>() : 0.0;
       const double G_norm   = (me > 0) ? G.lpNorm<Eigen::Infinity>() : 0.0;
       unsigned int failures = 0;
@@ -248,94 +246,147 @@ namespace dpana
           if (step == options.max_iterations)
             break;
 
-          // Generalised Jacobian, block row j:
-          //   (I - D_j) e_j + rho_j D_j M_j,:  |  rho_j D_j G_j^T,
-          // equality rows: G | 0. A block with D_j = 0 (friction radius
-          // zero, interval end, polygon vertex) has the row e_j: its step is
-          // dx_j = -F_j outright. Those blocks are eliminated, and only the
-          // remaining "free" blocks (stick, facet or circle slip) enter the
-          // dense LU, which makes the step much cheaper when many elements
-          // are separated or at a vertex.
-          free_blocks.clear();
+          // @sect5{The Newton step as a symmetric positive definite system}
+          //
+          // The generalised Jacobian of F_j = T_j - Pi(T_j - rho_j w_j),
+          // w = M T + c + G^T beta, has the block rows
+          //   dF_j = dT_j - D_j (dT_j - rho_j (M dT + G^T dbeta)_j),
+          // and the Newton step solves dF = -F (with G dT = -(G T - e)).
+          // D_j, the derivative of a projection onto a convex set, is
+          // symmetric with eigenvalues in [0, 1]: D_j = sum_i lambda_i v_i
+          // v_i^T (FrictionSet::projection_derivative_spectral). Along an
+          // eigenvector v with lambda = 0 (the radial direction of a slip
+          // disc block, the normal of a polygon facet, a vertex, a zero
+          // radius, an interval end) the step is fixed outright,
+          // v . dT_j = -v . F_j. Along an eigenvector with lambda > 0 the row,
+          // divided by lambda rho_j, reads
+          //   v . (M dT + G^T dbeta)_j + kappa v . dT_j
+          //     = -v . F_j / (lambda rho_j),   kappa = (1 - lambda)/(lambda
+          //     rho_j) >= 0.
+          // Writing dT = dT_fixed + Z x, with the columns of Z the
+          // eigenvectors with lambda > 0 (placed in their blocks) and x their
+          // amplitudes, the unknowns x solve
+          //   (Z^T M Z + diag(kappa)) x + Z^T G^T dbeta = g,
+          //   G Z x = -(G T - e) - G dT_fixed,
+          //   g = -Lambda^{-1} Z^T F / rho - Z^T M dT_fixed.
+          // Z has orthonormal columns and M is SPD, so H = Z^T M Z + diag(
+          // kappa) is SPD: a Cholesky factorisation replaces the LU of the
+          // full nonsymmetric Jacobian. The step is the same (the Jacobian
+          // is only reduced, not approximated), the system has one unknown
+          // per stick or facet direction instead of d - 1 per free block,
+          // and Cholesky takes half the work of LU. Equality rows: Schur
+          // complement S = B^T H^{-1} B, B = Z^T G^T.
           dx.setZero();
+          directions.clear();
           for (unsigned int j = 0; j < n; ++j)
             {
-              double *D = derivatives.data() + m * m * j;
-              set.projection_derivative(radius[j],
-                                        y.data() + m * j,
-                                        region[j],
-                                        D);
-              bool nonzero = false;
-              for (unsigned int a = 0; a < m * m; ++a)
-                nonzero = nonzero || D[a] != 0.0;
-              if (nonzero)
-                free_blocks.push_back(j);
+              double lambda[2], V[4];
+              set.projection_derivative_spectral(
+                radius[j], y.data() + m * j, region[j], lambda, V);
+              for (unsigned int i = 0; i < m; ++i)
+                {
+                  const double *vi = V + m * i;
+                  double        vF = 0.0;
+                  for (unsigned int a = 0; a < m; ++a)
+                    vF += vi[a] * F[m * j + a];
+                  if (lambda[i] == 0.0)
+                    for (unsigned int a = 0; a < m; ++a)
+                      dx[m * j + a] -= vF * vi[a];
+                  else
+                    {
+                      Direction dir;
+                      dir.block  = j;
+                      dir.v[0]   = vi[0];
+                      dir.v[1]   = (m == 2) ? vi[1] : 0.0;
+                      dir.lambda = lambda[i];
+                      dir.vF     = vF;
+                      directions.push_back(dir);
+                    }
+                }
+            }
+          const Eigen::Index f = static_cast<Eigen::Index>(directions.size());
+          v.noalias()          = M * dx.head(q);
+
+          // M Z column by column (contiguous columns of M), then the lower
+          // triangle of H = Z^T (M Z) + diag(kappa) and the right-hand side.
+          MZ.resize(q, f);
+          for (Eigen::Index a = 0; a < f; ++a)
+            {
+              const Direction &dir = directions[a];
+              if (m == 1)
+                MZ.col(a) = dir.v[0] * M.col(dir.block);
               else
-                dx.segment(m * j, m) = -F.segment(m * j, m);
+                MZ.col(a) = dir.v[0] * M.col(2 * dir.block) +
+                            dir.v[1] * M.col(2 * dir.block + 1);
             }
-          const Eigen::Index nf = static_cast<Eigen::Index>(free_blocks.size());
-          const Eigen::Index f  = m * nf;
-          v.noalias()           = M * dx.head(q);
-          J.resize(f + me, f + me);
-          rhs_reduced.resize(f + me);
-          for (Eigen::Index bk = 0; bk < nf; ++bk)
+          H.resize(f, f);
+          g.resize(f);
+          for (Eigen::Index b = 0; b < f; ++b)
             {
-              const unsigned int k = free_blocks[bk];
-              for (unsigned int t = 0; t < m; ++t)
+              const double *column = MZ.data() + q * b;
+              for (Eigen::Index a = b; a < f; ++a)
                 {
-                  const Eigen::Index col  = m * bk + t;
-                  const Eigen::Index gcol = m * k + t;
-                  for (Eigen::Index bj = 0; bj < nf; ++bj)
-                    {
-                      const unsigned int j = free_blocks[bj];
-                      const double      *D = derivatives.data() + m * m * j;
-                      for (unsigned int a = 0; a < m; ++a)
-                        {
-                          double value = 0.0;
-                          for (unsigned int b = 0; b < m; ++b)
-                            value += D[m * a + b] * M(m * j + b, gcol);
-                          value *= rho[j];
-                          if (j == k)
-                            value += (a == t ? 1.0 : 0.0) - D[m * a + t];
-                          J(m * bj + a, col) = value;
-                        }
-                    }
-                  for (Eigen::Index i = 0; i < me; ++i)
-                    J(f + i, col) = G(i, gcol);
+                  const Direction &dir = directions[a];
+                  const double    *row = column + m * dir.block;
+                  double           h   = dir.v[0] * row[0];
+                  if (m == 2)
+                    h += dir.v[1] * row[1];
+                  H(a, b) = h;
                 }
+              const Direction &dir = directions[b];
+              const double     lr  = dir.lambda * rho[dir.block];
+              H(b, b) += (1.0 - dir.lambda) / lr;
+              double zv = dir.v[0] * v[m * dir.block];
+              if (m == 2)
+                zv += dir.v[1] * v[m * dir.block + 1];
+              g[b] = -dir.vF / lr - zv;
             }
-          for (Eigen::Index bj = 0; bj < nf; ++bj)
+          if (f > 0)
             {
-              const unsigned int j = free_blocks[bj];
-              const double      *D = derivatives.data() + m * m * j;
-              for (unsigned int a = 0; a < m; ++a)
+              llt.compute(H);
+              if (llt.info() != Eigen::Success)
                 {
-                  double value = 0.0;
-                  for (unsigned int b = 0; b < m; ++b)
-                    value += D[m * a + b] * v[m * j + b];
-                  rhs_reduced[m * bj + a] = -F[m * j + a] - rho[j] * value;
-                  for (Eigen::Index i = 0; i < me; ++i)
-                    {
-                      double g = 0.0;
-                      for (unsigned int b = 0; b < m; ++b)
-                        g += D[m * a + b] * G(i, m * j + b);
-                      J(m * bj + a, f + i) = rho[j] * g;
-                    }
+                  result.iterations = step;
+                  result.message =
+                    "friction active set: Newton matrix not positive definite";
+                  return result;
                 }
+              x = llt.solve(g);
             }
+          else
+            x.resize(0);
           if (me > 0)
             {
-              J.bottomRightCorner(me, me).setZero();
-              rhs_reduced.tail(me) = -F.tail(me) - G * dx.head(q);
+              // B = Z^T G^T (f x me), h = -(G T - e) - G dT_fixed.
+              B.resize(f, me);
+              for (Eigen::Index a = 0; a < f; ++a)
+                {
+                  const Direction &dir = directions[a];
+                  for (Eigen::Index i = 0; i < me; ++i)
+                    {
+                      double bi = dir.v[0] * G(i, m * dir.block);
+                      if (m == 2)
+                        bi += dir.v[1] * G(i, m * dir.block + 1);
+                      B(a, i) = bi;
+                    }
+                }
+              const Eigen::VectorXd h = -F.tail(me) - G * dx.head(q);
+              Eigen::MatrixXd       Y(f, me);
+              if (f > 0)
+                Y = llt.solve(B);
+              const Eigen::MatrixXd S = B.transpose() * Y;
+              const Eigen::VectorXd dbeta =
+                Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(S)
+                  .solve(B.transpose() * x - h);
+              if (f > 0)
+                x.noalias() -= Y * dbeta;
+              dx.tail(me) = dbeta;
             }
-          if (f + me > 0)
+          for (Eigen::Index a = 0; a < f; ++a)
             {
-              lu.compute(J);
-              const Eigen::VectorXd z = lu.solve(rhs_reduced);
-              for (Eigen::Index bj = 0; bj < nf; ++bj)
-                dx.segment(m * free_blocks[bj], m) = z.segment(m * bj, m);
-              if (me > 0)
-                dx.tail(me) = z.tail(me);
+              const Direction &dir = directions[a];
+              for (unsigned int t = 0; t < m; ++t)
+                dx[m * dir.block + t] += x[a] * dir.v[t];
             }
           if (!dx.allFinite())
             {

@@ -327,6 +327,60 @@ namespace dpana
 
 
     void
+    FrictionSet::projection_derivative_spectral(const double  c,
+                                                const double *y,
+                                                const int     region,
+                                                double       *lambda,
+                                                double       *V) const
+    {
+      if (dim == 2)
+        {
+          lambda[0] = (region < 0) ? 1.0 : 0.0;
+          V[0]      = 1.0;
+          return;
+        }
+      // Cartesian axes by default (interior: identity; vertex, zero radius:
+      // zero).
+      V[0] = 1.0;
+      V[1] = 0.0;
+      V[2] = 0.0;
+      V[3] = 1.0;
+      if (region < 0)
+        {
+          lambda[0] = lambda[1] = 1.0;
+          return;
+        }
+      lambda[0] = lambda[1] = 0.0;
+      if (cone == ConeModel::disc)
+        {
+          const double t = std::hypot(y[0], y[1]);
+          if (t == 0.0 || c == 0.0)
+            return;
+          // (c/|y|) (I - y y^T/|y|^2): c/|y| along the tangent of the
+          // circle, 0 along the radius y/|y|.
+          const double u0 = y[0] / t, u1 = y[1] / t;
+          lambda[0] = c / t;
+          V[0]      = -u1;
+          V[1]      = u0;
+          V[2]      = u0;
+          V[3]      = u1;
+          return;
+        }
+      if (region < static_cast<int>(sides))
+        {
+          // I - n n^T: 1 along the facet, 0 along its normal n.
+          const Eigen::Vector2d &n = facet_normals[region];
+          lambda[0]                = 1.0;
+          V[0]                     = -n[1];
+          V[1]                     = n[0];
+          V[2]                     = n[0];
+          V[3]                     = n[1];
+        }
+    }
+
+
+
+    void
     FrictionSet::projection_radius_derivative(const double  c,
                                               const double *y,
                                               const int     region,

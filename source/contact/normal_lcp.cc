@@ -149,9 +149,7 @@ namespace dpana
 
       std::set<std::vector<char>> visited;
       std::vector<Eigen::Index>   index;
-      Eigen::MatrixXd             Mcc, Gc, Y;
       Eigen::VectorXd             bc, x;
-      Eigen::LLT<Eigen::MatrixXd> llt;
       unsigned int                restarts = 0;
 
       for (unsigned int step = 1; step <= options.max_iterations; ++step)
@@ -169,38 +167,48 @@ namespace dpana
               std::fill(in_contact.begin(), in_contact.end(), 1);
               continue;
             }
-          Mcc.resize(k, k);
           bc.resize(k);
           for (Eigen::Index a = 0; a < k; ++a)
-            {
-              bc[a] = b[index[a]];
-              for (Eigen::Index c = 0; c < k; ++c)
-                Mcc(a, c) = M(index[a], index[c]);
-            }
+            bc[a] = b[index[a]];
           N.setZero();
           if (k > 0)
             {
-              llt.compute(Mcc);
-              if (llt.info() != Eigen::Success)
+              // The factorisation depends on the contact set only. Within a
+              // splitting the set settles after a few outer iterations, so
+              // the factors of the last set are kept and reused when the set
+              // comes back (the solve is then the same to round-off).
+              if (!factor_valid || index != factored_index)
                 {
-                  result.message =
-                    "normal active set: M_CC not positive definite";
-                  result.iterations = step;
-                  return result;
+                  factor_valid = false;
+                  Mcc.resize(k, k);
+                  for (Eigen::Index c = 0; c < k; ++c)
+                    for (Eigen::Index a = 0; a < k; ++a)
+                      Mcc(a, c) = M(index[a], index[c]);
+                  llt.compute(Mcc);
+                  if (llt.info() != Eigen::Success)
+                    {
+                      result.message =
+                        "normal active set: M_CC not positive definite";
+                      result.iterations = step;
+                      return result;
+                    }
+                  if (m > 0)
+                    {
+                      Gc.resize(m, k);
+                      for (Eigen::Index a = 0; a < k; ++a)
+                        Gc.col(a) = G.col(index[a]);
+                      Y = llt.solve(Gc.transpose()); // M_CC^{-1} G_C^T
+                      schur.compute(Gc * Y);
+                    }
+                  factored_index = index;
+                  factor_valid   = true;
                 }
               if (m > 0)
                 {
-                  Gc.resize(m, k);
-                  for (Eigen::Index a = 0; a < k; ++a)
-                    Gc.col(a) = G.col(index[a]);
-                  Y = llt.solve(Gc.transpose()); // M_CC^{-1} G_C^T
-                  const Eigen::MatrixXd S  = Gc * Y;
                   const Eigen::VectorXd z  = llt.solve(-bc);
                   const Eigen::VectorXd rs = Gc * z - e;
-                  alpha =
-                    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(S)
-                      .solve(rs);
-                  x = z - Y * alpha;
+                  alpha                    = schur.solve(rs);
+                  x                        = z - Y * alpha;
                 }
               else
                 x = llt.solve(-bc);

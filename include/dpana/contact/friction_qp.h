@@ -28,9 +28,13 @@
 //     it stops as soon as the faces repeat. For the disc it converges
 //     locally quadratically. Globalised by an Armijo backtracking on
 //     1/2 ||F||^2; if the line search fails, a few PGS sweeps are made before
-//     Newton resumes. Blocks with a zero projection derivative (radius 0,
-//     interval end, polygon vertex) have the step -F_j outright and are
-//     eliminated: only stick / facet / circle blocks enter the dense LU.
+//     Newton resumes. The Newton system is reduced exactly to a symmetric
+//     positive definite one (the projection derivative is symmetric with
+//     eigenvalues in [0, 1]): directions with eigenvalue 0 (radius 0,
+//     interval end, polygon vertex, the radial direction of a disc slip
+//     block, the normal of a facet) have their step outright, the others
+//     (stick, the facet or circle tangent) enter a Cholesky factorisation,
+//     with a Schur complement for the equality rows.
 #ifndef dpana_contact_friction_qp_h
 #define dpana_contact_friction_qp_h
 
@@ -109,7 +113,22 @@ namespace dpana
       Eigen::MatrixXd        M_augmented;
       Eigen::VectorXd        w, rhs, y;
       std::vector<int>       region;
-      Eigen::MatrixXd        J;
+
+      // Work space of the Newton step of solve_active_set: the directions
+      // with a nonzero eigenvalue of the projection derivative (block,
+      // eigenvector, eigenvalue, v . F_j), M Z, H, its factorisation, the
+      // right-hand side g, the amplitudes x and B = Z^T G^T.
+      struct Direction
+      {
+        unsigned int block;
+        double       v[2];
+        double       lambda;
+        double       vF;
+      };
+      std::vector<Direction>      directions;
+      Eigen::MatrixXd             MZ, H, B;
+      Eigen::LLT<Eigen::MatrixXd> llt;
+      Eigen::VectorXd             g, x;
     };
   } // namespace contact
 } // namespace dpana

@@ -86,6 +86,23 @@ namespace dpana
                             const int     region,
                             double       *J) const;
 
+      // The same derivative in spectral form, J = sum_i lambda_i v_i v_i^T
+      // (i < d - 1), with orthonormal v_i (written one after the other to
+      // V, d - 1 entries each) and eigenvalues lambda_i in [0, 1]: the
+      // derivative of a projection onto a convex set is symmetric. The
+      // eigenvectors are the natural axes of the region (the Cartesian
+      // axes inside, the normal and the tangent of the circle or of a
+      // facet), so that eigenvalues 0 and 1 come out exactly, without an
+      // eigenvalue computation and its round-off. The semismooth Newton
+      // step of friction_qp.h uses this form to reduce its linear system to
+      // a symmetric positive definite one.
+      void
+      projection_derivative_spectral(const double  c,
+                                     const double *y,
+                                     const int     region,
+                                     double       *lambda,
+                                     double       *V) const;
+
       // Derivative (d-1 entries) of the projection onto c P at y with
       // respect to the radius c: 0 inside, y/|y| on the circle, sign(y) at an
       // interval end, n_i on facet i, v_i at vertex i.

@@ -32,6 +32,7 @@
 #include <Eigen/Dense>
 
 #include <string>
+#include <vector>
 
 namespace dpana
 {
@@ -102,6 +103,15 @@ namespace dpana
       Eigen::MatrixXd        M_augmented;
       Eigen::VectorXd        inverse_diagonal_augmented;
       Eigen::VectorXd        w, rhs;
+
+      // Factorisation of the last contact set of solve_active_set (M_CC,
+      // and with equality rows M_CC^{-1} G_C^T and the Schur complement),
+      // reused while the set repeats.
+      std::vector<Eigen::Index>   factored_index;
+      bool                        factor_valid = false;
+      Eigen::MatrixXd             Mcc, Gc, Y;
+      Eigen::LLT<Eigen::MatrixXd> llt;
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> schur;
     };
   } // namespace contact
 } // namespace dpana
