@@ -68,9 +68,23 @@ namespace dpana
       unsigned int           n_elements = 0;
     };
 
+    /**
+     * The comparison of a run with one of its references: the kind
+     * ("uniform", "hertz", "seed table", "table"), the log line, and the
+     * named numbers (reference values and relative errors) that the JSON
+     * summary lists.
+     */
+    struct Comparison
+    {
+      std::string                                 type;
+      std::string                                 text;
+      std::vector<std::pair<std::string, double>> values;
+    };
+
     struct Summary
     {
-      unsigned int      n_elements = 0;
+      std::vector<unsigned int> dofs; // per body
+      unsigned int              n_elements = 0;
       double            half_width = 0; // outer edge of the contact zone
       double            half_width_centroid    = 0;
       double            max_pressure           = 0; // max(-N)
@@ -81,6 +95,7 @@ namespace dpana
       contact::SolverResult         result;
       double                        asymmetry = 0;
       std::vector<double>           element_residual;
+      std::vector<Comparison>       comparisons;
     };
 
     /**
@@ -232,6 +247,8 @@ namespace dpana
 
       void
       compute_summary();
+      void
+      compare_with_references();
       void
       write_surface_vtu() const;
       void

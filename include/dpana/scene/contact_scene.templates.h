@@ -438,6 +438,9 @@ namespace dpana
       const auto        &res     = summary_.result;
       const unsigned int n       = surface.n_elements();
       summary_.n_elements        = n;
+      summary_.dofs.clear();
+      for (const auto &b : bodies)
+        summary_.dofs.push_back(b->dof_handler().n_dofs());
 
       // Per-element natural-map residual ||F_j||, F_j = r_j - Pi_K(r_j - rho
       // u~_j), the same measure as the solvers' (residual.h), in MPa.
@@ -510,6 +513,7 @@ namespace dpana
                 summary_.zones.push_back(z);
             }
         }
+      compare_with_references();
     }
 
 
@@ -540,6 +544,25 @@ namespace dpana
                "surface; enlarge Contact / Candidate half width"
             << std::endl;
 
+      for (const auto &c : summary_.comparisons)
+        out << c.text << std::endl;
+    }
+
+
+
+    // The references of the run: each comparison keeps its log line and its
+    // numbers for the JSON summary.
+    template <int dim>
+    void
+    ContactScene<dim>::compare_with_references()
+    {
+      const auto &res = summary_.result;
+      summary_.comparisons.clear();
+      const auto add = [this](const std::string                          &type,
+                              const std::ostringstream                   &text,
+                              std::vector<std::pair<std::string, double>> v) {
+        summary_.comparisons.push_back({type, text.str(), std::move(v)});
+      };
       const auto rel = [](const double x, const double ref) {
         return ref != 0 ? (x - ref) / std::abs(ref) : 0.0;
       };
@@ -554,11 +577,17 @@ namespace dpana
               for (unsigned int k = 1; k < dim; ++k)
                 eT = std::max(eT, std::abs(res.r(dim * j + k)));
             }
-          out << "Reference (uniform state): N = " << uniform_normal_traction
+          const double       scale = std::abs(uniform_normal_traction);
+          std::ostringstream out;
+          out << std::setprecision(6)
+              << "Reference (uniform state): N = " << uniform_normal_traction
               << " MPa, T = 0 on every element; max |N - N_ref| / |N_ref| = "
-              << eN / std::abs(uniform_normal_traction)
-              << ", max |T| / |N_ref| = "
-              << eT / std::abs(uniform_normal_traction) << std::endl;
+              << eN / scale << ", max |T| / |N_ref| = " << eT / scale;
+          add("uniform",
+              out,
+              {{"N", uniform_normal_traction},
+               {"max_N_error", eN / scale},
+               {"max_T", eT / scale}});
         }
       if (reference_type == "hertz")
         {
@@ -582,20 +611,39 @@ namespace dpana
             R = radius_1 * radius_2 / (radius_1 + radius_2);
           else if (radius_2 < 0)
             R = radius_1 * (-radius_2) / (-radius_2 - radius_1);
-          const double a_H = std::sqrt(4 * hertz_load * (k1 + k2) * R);
-          const double N_H = 2 * hertz_load / (M_PI * a_H);
-          out << "Reference (Hertz): a = " << a_H << " mm, N_max = " << N_H
+          const double       a_H = std::sqrt(4 * hertz_load * (k1 + k2) * R);
+          const double       N_H = 2 * hertz_load / (M_PI * a_H);
+          std::ostringstream out;
+          out << std::setprecision(6) << "Reference (Hertz): a = " << a_H
+              << " mm, N_max = " << N_H
               << " MPa; relative errors of this run: a " << std::showpos
               << rel(summary_.half_width, a_H) << " (centroid "
               << rel(summary_.half_width_centroid, a_H) << "), N_max "
-              << rel(summary_.max_pressure, N_H) << std::noshowpos << std::endl;
+              << rel(summary_.max_pressure, N_H);
+          add("hertz",
+              out,
+              {{"a", a_H},
+               {"N_max", N_H},
+               {"a_error", rel(summary_.half_width, a_H)},
+               {"a_centroid_error", rel(summary_.half_width_centroid, a_H)},
+               {"N_max_error", rel(summary_.max_pressure, N_H)}});
           if (seed_half_width > 0 || seed_max_pressure > 0)
-            out << "Reference (seed table): a = " << seed_half_width
-                << " mm, N_max = " << seed_max_pressure
-                << " MPa; relative differences: a " << std::showpos
-                << rel(summary_.half_width, seed_half_width) << ", N_max "
-                << rel(summary_.max_pressure, seed_max_pressure)
-                << std::noshowpos << std::endl;
+            {
+              std::ostringstream seed;
+              seed << std::setprecision(6)
+                   << "Reference (seed table): a = " << seed_half_width
+                   << " mm, N_max = " << seed_max_pressure
+                   << " MPa; relative differences: a " << std::showpos
+                   << rel(summary_.half_width, seed_half_width) << ", N_max "
+                   << rel(summary_.max_pressure, seed_max_pressure);
+              add("seed table",
+                  seed,
+                  {{"a", seed_half_width},
+                   {"N_max", seed_max_pressure},
+                   {"a_difference", rel(summary_.half_width, seed_half_width)},
+                   {"N_max_difference",
+                    rel(summary_.max_pressure, seed_max_pressure)}});
+            }
         }
       if (!reference_table.empty())
         {
@@ -631,9 +679,14 @@ namespace dpana
               eN = std::max(eN, std::abs(res.r(dim * j) - interp(e.s, 1)));
               eT = std::max(eT, std::abs(res.r(dim * j + 1) - interp(e.s, 2)));
             }
-          out << "Reference (" << reference_csv
+          std::ostringstream out;
+          out << std::setprecision(6) << "Reference (" << reference_csv
               << "): max |N - N_ref| / max|N_ref| = " << eN / scale
-              << ", max |T - T_ref| / max|N_ref| = " << eT / scale << std::endl;
+              << ", max |T - T_ref| / max|N_ref| = " << eT / scale;
+          add("table",
+              out,
+              {{"max_N_difference", eN / scale},
+               {"max_T_difference", eT / scale}});
         }
     }
 
@@ -780,7 +833,10 @@ namespace dpana
       std::ofstream out(output_directory + "/summary.json");
       out << std::setprecision(10);
       out << "{\n  \"dimension\": " << dim
-          << ",\n  \"bodies\": " << bodies.size()
+          << ",\n  \"bodies\": " << bodies.size() << ",\n  \"dofs\": [";
+      for (unsigned int b = 0; b < summary_.dofs.size(); ++b)
+        out << (b ? ", " : "") << summary_.dofs[b];
+      out << "]"
           << ",\n  \"contact_elements\": " << summary_.n_elements
           << ",\n  \"friction_coefficient\": " << friction
           << ",\n  \"solver\": \"" << contact::to_string(solver_options.type)
@@ -816,7 +872,20 @@ namespace dpana
       out << "\n  ],\n  \"rigid_displacements\": [";
       for (int i = 0; i < res.alpha.size(); ++i)
         out << (i ? ", " : "") << res.alpha(i);
-      out << "],\n  \"timings\": {";
+      out << "],\n  \"references\": [";
+      for (unsigned int c = 0; c < summary_.comparisons.size(); ++c)
+        {
+          const auto &C = summary_.comparisons[c];
+          out << (c ? ", " : "") << "\n    {\"type\": \"" << C.type << "\"";
+          if (C.type == "table")
+            out << ", \"file\": \"" << output::internal::escape(reference_csv)
+                << "\"";
+          for (const auto &[name, value] : C.values)
+            out << ", \"" << name << "\": " << value;
+          out << "}";
+        }
+      out << (summary_.comparisons.empty() ? "" : "\n  ")
+          << "],\n  \"timings\": {";
       bool first = true;
       for (const auto &[name, t] : summary_.timings)
         {

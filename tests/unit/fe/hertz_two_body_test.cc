@@ -155,6 +155,12 @@ namespace
            "  set Candidate half width = 20\n"
            "  set Contact direction = 0, -1\n"
            "  set Friction coefficient = 0\n"
+           "  subsection Reference\n"
+           "    set Type = hertz\n"
+           "    set Hertz load = 200000\n"
+           "    set Radius 1 = 40\n"
+           "    set Radius 2 = -120\n"
+           "  end\n"
            "end\n";
   }
 } // namespace
@@ -174,14 +180,24 @@ namespace
 // the contact zone), and is below Hertz's.
 TEST(HertzTwoBody, CylinderInCavityConverges)
 {
-  const double        a_seed = 13.96, N_seed = 8914.6;
-  const double        a_H = 15.0219, N_H = 8475.89;
+  const double a_seed = 13.96, N_seed = 8914.6;
+  // Hertz for the cavity, computed here from the formulas: k = (1 -
+  // nu^2) / (pi E) for each body, 1/R = 1/R1 - 1/R2.
+  const double        k = (1 - 0.2 * 0.2) / (M_PI * 130000), R = 40. * 120 / 80;
+  const double        a_H = std::sqrt(4 * 200000 * 2 * k * R);
+  const double        N_H = 2 * 200000 / (M_PI * a_H);
   std::vector<double> a, N, h;
   for (const unsigned int m : {3u, 4u, 5u})
     {
       auto s = make_scene<2>(cavity_prm(m), 2);
       s->run(false);
       ASSERT_TRUE(s->summary().result.converged);
+      // The scene's own Hertz reference (printed and in summary.json).
+      ASSERT_FALSE(s->summary().comparisons.empty());
+      const auto &hertz = s->summary().comparisons[0];
+      ASSERT_EQ(hertz.type, "hertz");
+      EXPECT_NEAR(hertz.values[0].second, a_H, 1e-12 * a_H);
+      EXPECT_NEAR(hertz.values[1].second, N_H, 1e-12 * N_H);
       a.push_back(s->summary().half_width);
       N.push_back(s->summary().max_pressure);
       const double size = dpana::test::contact_element_size(*s);
