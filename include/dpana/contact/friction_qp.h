@@ -114,21 +114,45 @@ namespace dpana
       Eigen::VectorXd        w, rhs, y;
       std::vector<int>       region;
 
+      // Factor the Newton matrix H of the current directions (directly,
+      // or by blocks with the factors kept per partition; see the .cc
+      // file); false if it is not numerically positive definite.
+      bool
+      factor_newton_matrix();
+
+      // H^{-1} R for a right-hand side R with one row per direction.
+      Eigen::MatrixXd
+      solve_newton_matrix(const Eigen::MatrixXd &R) const;
+
       // Work space of the Newton step of solve_active_set: the directions
       // with a nonzero eigenvalue of the projection derivative (block,
-      // eigenvector, eigenvalue, v . F_j), M Z, H, its factorisation, the
-      // right-hand side g, the amplitudes x and B = Z^T G^T.
+      // eigenvector, eigenvalue, v . F_j, index of the eigenvector), the
+      // partition of the blocks (2 stick, 1 slip, 0 fixed), the right-hand
+      // side g and the amplitudes x.
       struct Direction
       {
         unsigned int block;
         double       v[2];
         double       lambda;
         double       vF;
+        unsigned int axis;
       };
-      std::vector<Direction>      directions;
-      Eigen::MatrixXd             MZ, H, B;
+      std::vector<Direction> directions;
+      std::vector<char>      partition, previous_partition;
+      Eigen::VectorXd        g, x;
+      Eigen::MatrixXd        B;
+      // Direct factorisation: M Z, H, Cholesky of H.
+      Eigen::MatrixXd             MZ, H;
       Eigen::LLT<Eigen::MatrixXd> llt;
-      Eigen::VectorXd             g, x;
+      // Blocked factorisation: components of the stick and the slip blocks,
+      // the first component of each block among them (-1: none), Cholesky
+      // of M_ss, P = M_ss^{-1} M_sl and Sigma (kept for cached_partition),
+      // the positions of the directions, S and its Cholesky factor.
+      bool                        blocked = false, cache_valid = false;
+      std::vector<char>           cached_partition;
+      std::vector<Eigen::Index>   s_index, l_index, s_start, l_start, position;
+      Eigen::LLT<Eigen::MatrixXd> llt_stick, llt_slip;
+      Eigen::MatrixXd             P, Sigma, S_slip;
     };
   } // namespace contact
 } // namespace dpana

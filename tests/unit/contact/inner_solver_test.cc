@@ -162,8 +162,27 @@ TEST(InnerSolvers, FrictionQpActiveSetAgreesWithPgs)
         EXPECT_GT(boundary, 2u) << "dim " << model.dim << " rows " << rows;
         EXPECT_LE(relative_difference(T_pgs, T_newton), 1e-8)
           << "dim " << model.dim << " rows " << rows;
+        // A second, warm-started solve with slightly changed data, as in the
+        // splitting: its first Newton step meets the partition of the last
+        // step of the first solve and takes the blocked factorisation (kept
+        // Cholesky of M_ss and Schur complement of the slip blocks).
+        Eigen::VectorXd c2 = c;
+        for (unsigned int i = 0; i < q; ++i)
+          c2[i] += 1e-3 * uniform(gen);
+        Eigen::VectorXd   T2_pgs = T_pgs, beta2_pgs = beta_pgs;
+        Eigen::VectorXd   T2_newton = T_newton, beta2_newton = beta_newton;
+        const InnerResult r2_pgs =
+          pgs.solve_pgs(c2, radius, e, T2_pgs, beta2_pgs);
+        const InnerResult r2_newton =
+          newton.solve_active_set(c2, radius, e, T2_newton, beta2_newton);
+        ASSERT_TRUE(r2_pgs.converged) << r2_pgs.message;
+        ASSERT_TRUE(r2_newton.converged) << r2_newton.message;
+        EXPECT_LE(relative_difference(T2_pgs, T2_newton), 1e-8)
+          << "dim " << model.dim << " rows " << rows << " (warm)";
+        EXPECT_GT(relative_difference(T_newton, T2_newton), 1e-6);
         if (rows > 0)
           {
+            EXPECT_NEAR((G * T2_newton - e)[0], 0.0, 1e-10 * std::abs(e[0]));
             EXPECT_NEAR((G * T_newton - e)[0], 0.0, 1e-10 * std::abs(e[0]));
             EXPECT_NEAR(beta_newton[0],
                         beta_pgs[0],
