@@ -79,17 +79,18 @@ def main():
 
     with open(os.path.join(out, "scenes.md"), "w") as md:
         md.write(
-            "| scene | dofs | elements | μ | iterations | residual | a (mm) | N_max (MPa) "
+            "| scene | dofs | elements | μ | iterations | residual | a (mm) | element at a (mm) "
+            "| N_max (MPa) "
             "| zones | reference | error | "
             + " | ".join(p + " (s)" for p in phases)
             + " |\n"
         )
-        md.write("|" + "---|" * (11 + len(phases)) + "\n")
+        md.write("|" + "---|" * (12 + len(phases)) + "\n")
         for s, m in rows:
             ref, err = reference_text(m.get("references", []))
             t = m["timings"]
             md.write(
-                "| %s | %s | %d | %g | %d%s | %.1e | %.4g | %.5g | %s | %s | %s | %s |\n"
+                "| %s | %s | %d | %g | %d%s | %.1e | %.4g | %.2g | %.5g | %s | %s | %s | %s |\n"
                 % (
                     s,
                     " + ".join(str(d) for d in m.get("dofs", [])),
@@ -99,6 +100,7 @@ def main():
                     "" if m["converged"] else " (NOT converged)",
                     m["residual"],
                     m["contact_half_width"],
+                    m.get("contact_half_width_element", 0),
                     m["max_normal_traction"],
                     zones_text(m["zones"]),
                     cell(ref),
@@ -110,14 +112,15 @@ def main():
         w = csv.writer(f)
         w.writerow(
             ["scene", "dofs", "elements", "mu", "converged", "iterations", "residual",
-             "a", "N_max", "zones", "reference", "error"] + phases
+             "a", "element_at_a", "N_max", "zones", "reference", "error"] + phases
         )
         for s, m in rows:
             ref, err = reference_text(m.get("references", []))
             w.writerow(
                 [s, " + ".join(str(d) for d in m.get("dofs", [])), m["contact_elements"],
                  m["friction_coefficient"], m["converged"], m["iterations"], m["residual"],
-                 m["contact_half_width"], m["max_normal_traction"], zones_text(m["zones"]),
+                 m["contact_half_width"], m.get("contact_half_width_element", 0),
+                 m["max_normal_traction"], zones_text(m["zones"]),
                  ref, err] + [m["timings"].get(p, 0.0) for p in phases]
             )
 

@@ -85,12 +85,15 @@ namespace dpana
     {
       std::vector<unsigned int> dofs; // per body
       unsigned int              n_elements = 0;
-      double            half_width = 0; // outer edge of the contact zone
-      double            half_width_centroid    = 0;
-      double            max_pressure           = 0; // max(-N)
-      double            normal_resultant       = 0; // sum(-N area)
-      bool              candidate_edge_warning = false;
-      std::vector<Zone> zones;
+      double half_width          = 0; // outer edge of the contact zone
+      double half_width_centroid = 0;
+      // Tangential size of the element that ends the contact zone: with
+      // piecewise constant tractions, a is known to this size.
+      double                        half_width_element     = 0;
+      double                        max_pressure           = 0; // max(-N)
+      double                        normal_resultant       = 0; // sum(-N area)
+      bool                          candidate_edge_warning = false;
+      std::vector<Zone>             zones;
       std::map<std::string, double> timings;
       contact::SolverResult         result;
       double                        asymmetry = 0;

@@ -451,6 +451,7 @@ namespace dpana
 
       const double s0     = region_centre * surface.surface_tangents()[0];
       summary_.half_width = summary_.half_width_centroid = 0;
+      summary_.half_width_element                        = 0;
       summary_.max_pressure = summary_.normal_resultant = 0;
       summary_.candidate_edge_warning                   = false;
       for (unsigned int j = 0; j < n; ++j)
@@ -461,9 +462,13 @@ namespace dpana
           summary_.normal_resultant += -res.r(dim * j) * e.area;
           if (res.status[j] != ContactStatus::separated)
             {
-              summary_.half_width = std::max({summary_.half_width,
-                                              std::abs(e.s_max - s0),
-                                              std::abs(e.s_min - s0)});
+              const double edge =
+                std::max(std::abs(e.s_max - s0), std::abs(e.s_min - s0));
+              if (edge > summary_.half_width)
+                {
+                  summary_.half_width         = edge;
+                  summary_.half_width_element = e.s_max - e.s_min;
+                }
               summary_.half_width_centroid =
                 std::max(summary_.half_width_centroid, std::abs(e.s - s0));
               if (e.at_open_edge)
@@ -526,8 +531,11 @@ namespace dpana
       const auto &res = summary_.result;
       out << std::setprecision(6);
       out << "Results: contact half width a = " << summary_.half_width
-          << " mm (outer edge of the last element in contact; its centroid: "
-          << summary_.half_width_centroid << " mm), max normal traction "
+          << " mm (outer edge of the last element in contact, known to its "
+             "size "
+          << summary_.half_width_element
+          << " mm; its centroid: " << summary_.half_width_centroid
+          << " mm), max normal traction "
           << "-N_max = " << summary_.max_pressure
           << " MPa, resultant of -N = " << summary_.normal_resultant
           << (dim == 2 ? " N/mm" : " N") << std::endl;
@@ -852,6 +860,8 @@ namespace dpana
           << "},\n  \"message\": \"" << output::internal::escape(res.message)
           << "\",\n  \"asymmetry_of_A\": " << summary_.asymmetry
           << ",\n  \"contact_half_width\": " << summary_.half_width
+          << ",\n  \"contact_half_width_element\": "
+          << summary_.half_width_element
           << ",\n  \"contact_half_width_centroid\": "
           << summary_.half_width_centroid
           << ",\n  \"max_normal_traction\": " << summary_.max_pressure
