@@ -10,6 +10,7 @@
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -360,13 +361,23 @@ namespace dpana
     find_free_rigid_modes();
     void
     locate_concentrated_forces();
+    // The quadrature rules and the FEValues objects of the assembly of
+    // one cell (shared by assemble() and the reactions of postprocess()).
+    struct CellValues
+    {
+      CellValues(const dealii::Mapping<dim>       &mapping,
+                 const dealii::FiniteElement<dim> &fe);
+      const dealii::QGaussSimplex<dim>     quadrature;
+      const dealii::QGaussSimplex<dim - 1> face_quadrature;
+      dealii::FEValues<dim>                fe_values;
+      dealii::FEFaceValues<dim>            fe_face_values;
+    };
     void
     assemble_cell(
       const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-      dealii::FEValues<dim>                                        &fe_values,
-      dealii::FEFaceValues<dim>  &fe_face_values,
-      dealii::FullMatrix<double> &cell_matrix,
-      dealii::Vector<double>     &cell_rhs) const;
+      CellValues                                                   &values,
+      dealii::FullMatrix<double>                                   &cell_matrix,
+      dealii::Vector<double> &cell_rhs) const;
   };
 } // namespace dpana
 

@@ -635,14 +635,35 @@ namespace dpana
   //   f_i  = \int phi_i . b + \int_{faces with loads} phi_i . t,
   // with t = -p n on a pressure boundary.
   template <int dim>
+  Body<dim>::CellValues::CellValues(const dealii::Mapping<dim>       &mapping,
+                                    const dealii::FiniteElement<dim> &fe)
+    : quadrature(2)
+    , face_quadrature(2)
+    , fe_values(mapping,
+                fe,
+                quadrature,
+                dealii::update_values | dealii::update_gradients |
+                  dealii::update_quadrature_points | dealii::update_JxW_values)
+    , fe_face_values(mapping,
+                     fe,
+                     face_quadrature,
+                     dealii::update_values | dealii::update_normal_vectors |
+                       dealii::update_JxW_values)
+  {
+  }
+
+
+
+  template <int dim>
   void
   Body<dim>::assemble_cell(
     const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-    dealii::FEValues<dim>                                        &fe_values,
-    dealii::FEFaceValues<dim>  &fe_face_values,
-    dealii::FullMatrix<double> &cell_matrix,
-    dealii::Vector<double>     &cell_rhs) const
+    CellValues                                                   &values,
+    dealii::FullMatrix<double>                                   &cell_matrix,
+    dealii::Vector<double> &cell_rhs) const
   {
+    auto &fe_values      = values.fe_values;
+    auto &fe_face_values = values.fe_face_values;
     const dealii::FEValuesExtractors::Vector displacement(0);
     const unsigned int                       n      = fe_.n_dofs_per_cell();
     const double                             lambda = material_.lambda(dim);
@@ -726,21 +747,7 @@ namespace dpana
   {
     matrix = 0;
     rhs    = 0;
-    const dealii::QGaussSimplex<dim>     quadrature(2);
-    const dealii::QGaussSimplex<dim - 1> face_quadrature(2);
-    dealii::FEValues<dim>                fe_values(mapping_,
-                                    fe_,
-                                    quadrature,
-                                    dealii::update_values |
-                                      dealii::update_gradients |
-                                      dealii::update_quadrature_points |
-                                      dealii::update_JxW_values);
-    dealii::FEFaceValues<dim>            fe_face_values(mapping_,
-                                             fe_,
-                                             face_quadrature,
-                                             dealii::update_values |
-                                               dealii::update_normal_vectors |
-                                               dealii::update_JxW_values);
+    CellValues values(mapping_, fe_);
 
     const unsigned int                           n = fe_.n_dofs_per_cell();
     dealii::FullMatrix<double>                   cell_matrix(n, n);
@@ -748,7 +755,7 @@ namespace dpana
     std::vector<dealii::types::global_dof_index> local(n);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
-        assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
+        assemble_cell(cell, values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         constraints_.distribute_local_to_global(
           cell_matrix, cell_rhs, local, matrix, rhs);
@@ -856,21 +863,7 @@ namespace dpana
   {
     compute_stresses();
 
-    const dealii::QGaussSimplex<dim>     quadrature(2);
-    const dealii::QGaussSimplex<dim - 1> face_quadrature(2);
-    dealii::FEValues<dim>                fe_values(mapping_,
-                                    fe_,
-                                    quadrature,
-                                    dealii::update_values |
-                                      dealii::update_gradients |
-                                      dealii::update_quadrature_points |
-                                      dealii::update_JxW_values);
-    dealii::FEFaceValues<dim>            fe_face_values(mapping_,
-                                             fe_,
-                                             face_quadrature,
-                                             dealii::update_values |
-                                               dealii::update_normal_vectors |
-                                               dealii::update_JxW_values);
+    CellValues values(mapping_, fe_);
 
     const unsigned int         n = fe_.n_dofs_per_cell();
     dealii::Vector<double>     residual(u.size());
@@ -881,7 +874,7 @@ namespace dpana
 
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
-        assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
+        assemble_cell(cell, values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < n; ++i)
           u_local[i] = u[local[i]];
