@@ -473,10 +473,9 @@ namespace dpana
       }
       if (faces.empty())
         throw InputError(opts.body + ": no face of the contact boundary '" +
-                         opts.boundary + "' in the candidate region faces " +
-                         first.opts.body +
-                         " (parameters Contact / Boundary 2, Contact "
-                         "direction)");
+                         opts.boundary + "' faces " + first.opts.body +
+                         " along the contact direction (parameters Contact / "
+                         "Boundary 2, Contact direction)");
       n_surface   = -first.n_surface;
       tau_surface = first.tau_surface;
       for (auto &t : tau_surface)
@@ -519,8 +518,8 @@ namespace dpana
 
       // Centroids of this side, and the gap of the first body: the integral
       // over the element of the distance along n from its surface to this
-      // one, g = (x_2 - x_1) . n (pair_*() stored it in gap_integral). The
-      // open-edge flag is the first body's: its candidate region decides.
+      // one, g = (x_2 - x_1) . n (pair_projected() stored it in gap_integral).
+      // The open-edge flag is the first body's: its candidate region decides.
       for (unsigned int j = 0; j < elements.size(); ++j)
         {
           auto &e    = elements[j];
