@@ -1,5 +1,6 @@
 #include <dpana/contact/alart_curnier.h>
 #include <dpana/contact/friction_set.h>
+#include <dpana/contact/line_search.h>
 #include <dpana/contact/nsgs.h>
 
 #include <Eigen/LU>
@@ -241,21 +242,14 @@ namespace dpana
             }
 
           // Armijo backtracking on 1/2 ||F||^2.
-          const double phi      = 0.5 * F.squaredNorm();
-          double       t        = 1.0;
-          bool         accepted = false;
-          for (unsigned int ls = 0; ls < 30; ++ls, t *= 0.5)
-            {
+          const bool accepted =
+            armijo_backtracking(0.5 * F.squaredNorm(), 30, [&](const double t) {
               rtrial = r + t * dz.head(size);
               if (me > 0)
                 atrial = alpha + t * dz.tail(me);
               map.evaluate(rtrial, atrial, Ftrial);
-              if (0.5 * Ftrial.squaredNorm() <= (1.0 - 2e-4 * t) * phi)
-                {
-                  accepted = true;
-                  break;
-                }
-            }
+              return 0.5 * Ftrial.squaredNorm();
+            });
           if (!accepted)
             {
               // Globalisation: a few NSGS sweeps from the current point

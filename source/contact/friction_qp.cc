@@ -1,4 +1,5 @@
 #include <dpana/contact/friction_qp.h>
+#include <dpana/contact/line_search.h>
 #include <dpana/contact/method_of_multipliers.h>
 
 #include <Eigen/Cholesky>
@@ -600,21 +601,14 @@ namespace dpana
             }
 
           // Armijo backtracking on 1/2 ||F||^2.
-          const double phi      = 0.5 * F.squaredNorm();
-          double       t        = 1.0;
-          bool         accepted = false;
-          for (unsigned int ls = 0; ls < 40; ++ls, t *= 0.5)
-            {
+          const bool accepted =
+            armijo_backtracking(0.5 * F.squaredNorm(), 40, [&](const double t) {
               Ttrial = T + t * dx.head(q);
               if (me > 0)
                 btrial = beta + t * dx.tail(me);
               natural_map(c, radius, e, Ttrial, btrial, Ftrial);
-              if (0.5 * Ftrial.squaredNorm() <= (1.0 - 2e-4 * t) * phi)
-                {
-                  accepted = true;
-                  break;
-                }
-            }
+              return 0.5 * Ftrial.squaredNorm();
+            });
           if (accepted)
             {
               T.swap(Ttrial);

@@ -1,0 +1,40 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_contact_line_search_h
+#define dpana_contact_line_search_h
+
+namespace dpana
+{
+  namespace contact
+  {
+    /**
+     * Armijo backtracking for the semismooth Newton methods (Alart–Curnier,
+     * the friction step of the splitting): along a Newton direction dx of
+     * the merit function phi(x) = 1/2 ||F(x)||^2, the step lengths
+     * t = 1, 1/2, 1/4, ... are tried, at most @p max_steps of them, until
+     *
+     *   phi(x + t dx) <= (1 - 2e-4 t) phi(x),
+     *
+     * the sufficient decrease condition for the Newton direction (whose
+     * directional derivative of phi is -2 phi). @p trial_merit(t) forms the
+     * trial point x + t dx (the caller keeps it) and returns its merit.
+     * Returns whether a step was accepted; the trial point of the last call
+     * is then the accepted one.
+     */
+    template <typename TrialMerit>
+    bool
+    armijo_backtracking(const double       phi,
+                        const unsigned int max_steps,
+                        TrialMerit       &&trial_merit)
+    {
+      double t = 1.0;
+      for (unsigned int k = 0; k < max_steps; ++k, t *= 0.5)
+        if (trial_merit(t) <= (1.0 - 2e-4 * t) * phi)
+          return true;
+      return false;
+    }
+  } // namespace contact
+} // namespace dpana
+
+#endif
