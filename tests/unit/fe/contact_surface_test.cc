@@ -22,21 +22,50 @@ namespace
 {
   using namespace dpana;
 
+  // A body of type rectangle or box between `lower` and `upper` with
+  // `cells` subdivisions, with the given lines of its Boundary conditions
+  // and Loads subsections.
+  std::string
+  brick_body(const std::string &name,
+             const std::string &type,
+             const std::string &lower,
+             const std::string &upper,
+             const std::string &cells,
+             const std::string &conditions,
+             const std::string &loads)
+  {
+    return "subsection " + name +
+           "\n"
+           "  subsection Geometry\n"
+           "    set Type = " +
+           type + "\n    set Lower corner = " + lower +
+           "\n    set Upper corner = " + upper +
+           "\n    set Subdivisions = " + cells +
+           "\n"
+           "  end\n"
+           "  subsection Boundary conditions\n" +
+           conditions +
+           "  end\n"
+           "  subsection Loads\n" +
+           loads +
+           "  end\n"
+           "end\n";
+  }
+
+  // The box [0, 8] x [0, 2] x [0, 4] of 4 x 1 x 2 cells, fixed on its top:
+  // Body 1 of the 3D surface tests.
+  const std::string box_body = brick_body("Body 1",
+                                          "box",
+                                          "0, 0, 0",
+                                          "8, 2, 4",
+                                          "4, 1, 2",
+                                          "    set Fixed = top: x, y, z\n",
+                                          "");
+
   std::string
   box_prm(const std::string &faces_per_element)
   {
-    return "set Dimension = 3\n"
-           "subsection Body 1\n"
-           "  subsection Geometry\n"
-           "    set Type = box\n"
-           "    set Lower corner = 0, 0, 0\n"
-           "    set Upper corner = 8, 2, 4\n"
-           "    set Subdivisions = 4, 1, 2\n"
-           "  end\n"
-           "  subsection Boundary conditions\n"
-           "    set Fixed = top: x, y, z\n"
-           "  end\n"
-           "end\n"
+    return "set Dimension = 3\n" + box_body +
            "subsection Contact\n"
            "  set Boundary 1 = bottom\n"
            "  set Faces per contact element = " +
@@ -156,36 +185,6 @@ TEST(ContactSurface, GreedyAgglomerationCoversTheSurface)
 
 namespace
 {
-  // A body of type rectangle or box between `lower` and `upper` with
-  // `cells` subdivisions, with the given lines of its Boundary conditions
-  // and Loads subsections.
-  std::string
-  brick_body(const std::string &name,
-             const std::string &type,
-             const std::string &lower,
-             const std::string &upper,
-             const std::string &cells,
-             const std::string &conditions,
-             const std::string &loads)
-  {
-    return "subsection " + name +
-           "\n"
-           "  subsection Geometry\n"
-           "    set Type = " +
-           type + "\n    set Lower corner = " + lower +
-           "\n    set Upper corner = " + upper +
-           "\n    set Subdivisions = " + cells +
-           "\n"
-           "  end\n"
-           "  subsection Boundary conditions\n" +
-           conditions +
-           "  end\n"
-           "  subsection Loads\n" +
-           loads +
-           "  end\n"
-           "end\n";
-  }
-
   // Two stacked rectangles in 2D: the block [0, 40] x [0, 40] with n1 x n1
   // cells on the foundation [0, 40] x [-40, 0] with n2 x n2 cells (n1 != n2:
   // non-matching interface), 50 MPa on the top of the block, 100 MPa on the
@@ -441,33 +440,19 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
 TEST(ContactSurface, UncoveredSurfaceIsRefusedIn3D)
 {
   const std::string text = "set Dimension = 3\n"
-                           "set Number of bodies = 2\n"
-                           "subsection Body 1\n"
-                           "  subsection Geometry\n"
-                           "    set Type = box\n"
-                           "    set Lower corner = 0, 0, 0\n"
-                           "    set Upper corner = 8, 2, 4\n"
-                           "    set Subdivisions = 4, 1, 2\n"
-                           "  end\n"
-                           "  subsection Boundary conditions\n"
-                           "    set Fixed = top: x, y, z\n"
-                           "  end\n"
-                           "end\n"
-                           "subsection Body 2\n"
-                           "  subsection Geometry\n"
-                           "    set Type = box\n"
-                           "    set Lower corner = 0, -2, 0\n"
-                           "    set Upper corner = 8, 0, 3\n"
-                           "    set Subdivisions = 3, 1, 2\n"
-                           "  end\n"
-                           "  subsection Boundary conditions\n"
-                           "    set Fixed = bottom: x, y, z\n"
-                           "  end\n"
-                           "end\n"
+                           "set Number of bodies = 2\n" +
+                           box_body +
+                           brick_body("Body 2",
+                                      "box",
+                                      "0, -2, 0",
+                                      "8, 0, 3",
+                                      "3, 1, 2",
+                                      "    set Fixed = bottom: x, y, z\n",
+                                      "") +
                            "subsection Contact\n"
                            "  set Contact direction = 0, -1, 0\n"
                            "end\n";
-  auto              s    = make_scene<3>(text, 2);
+  auto s = make_scene<3>(text, 2);
   s->setup_bodies();
   try
     {

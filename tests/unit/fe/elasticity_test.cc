@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "mesh_test_tools.h"
 #include <gtest/gtest.h>
 
 namespace
@@ -39,33 +40,8 @@ namespace
   std::map<std::string, types::boundary_id>
   make_unit_brick(Triangulation<dim> &tria, const unsigned int n)
   {
-    GridGenerator::subdivided_hyper_rectangle_with_simplices(
-      tria,
-      std::vector<unsigned int>(dim, n),
-      Point<dim>(),
-      dim == 2 ? Point<dim>(1, 1) : Point<dim>(1, 1, 1));
-    for (const auto &face : tria.active_face_iterators())
-      if (face->at_boundary())
-        {
-          const auto c = face->center();
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              if (std::abs(c[d]) < 1e-12)
-                face->set_boundary_id(2 * d);
-              else if (std::abs(c[d] - 1.0) < 1e-12)
-                face->set_boundary_id(2 * d + 1);
-            }
-        }
-    std::map<std::string, types::boundary_id> names = {{"left", 0},
-                                                       {"right", 1},
-                                                       {"bottom", 2},
-                                                       {"top", 3}};
-    if (dim == 3)
-      {
-        names["front"] = 4;
-        names["back"]  = 5;
-      }
-    return names;
+    return dpana::test::make_named_brick(
+      tria, n, dim == 2 ? Point<dim>(1, 1) : Point<dim>(1, 1, 1));
   }
 
   // The manufactured displacement u_k = sin(a_k . x + b_k), with its

@@ -101,67 +101,40 @@ TEST(HertzTwoBody, StiffFoundationApproachesRigidPlane)
 namespace
 {
   // The cylinder in a cavity of seed 000, section 4.3, table 4.4 (as
-  // prm/hertz_cavity_mu0.prm): the quarter disc R1 = 40 around (0, 40) with
-  // m contact refinements within 21 mm of the origin, in the quarter ring
+  // prm/hertz_cavity_mu0.prm): the cylinder of hertz_prm() with m contact
+  // refinements within 21 mm of the origin, in the quarter ring
   // 120 <= r <= 360 around (0, 120) with m + 1 contact refinements there
   // (its arc is 3 times longer per degree), frictionless, candidate surface
-  // the arc within 20 mm.
+  // the arc within 20 mm, Hertz reference for the cavity.
   std::string
   cavity_prm(const unsigned int m)
   {
-    const std::string refine  = std::to_string(m);
-    const std::string refine2 = std::to_string(m + 1);
-    return "set Dimension = 2\n"
-           "set Number of bodies = 2\n"
-           "subsection Body 1\n"
-           "  subsection Geometry\n"
-           "    set Type = quarter disc\n"
-           "    set Radius = 40\n"
-           "    set Centre = 0, 40\n"
-           "    set Global refinements = 2\n"
-           "    set Contact refinements = " +
-           refine +
-           "\n"
-           "    set Contact refinement radius = 21\n"
-           "  end\n"
-           "  subsection Boundary conditions\n"
-           "    set Symmetry = axis\n"
-           "  end\n"
-           "  subsection Loads\n"
-           "    set Concentrated forces = 0, 40: 0, -100000\n"
-           "  end\n"
-           "end\n"
-           "subsection Body 2\n"
-           "  subsection Geometry\n"
-           "    set Type = quarter annulus\n"
-           "    set Inner radius = 120\n"
-           "    set Outer radius = 360\n"
-           "    set Centre = 0, 120\n"
-           "    set Global refinements = 2\n"
-           "    set Contact refinements = " +
-           refine2 +
-           "\n"
-           "    set Contact refinement radius = 21\n"
-           "  end\n"
-           "  subsection Boundary conditions\n"
-           "    set Symmetry = y_axis\n"
-           "    set Fixed = outer: x, y; x_axis: y\n"
-           "  end\n"
-           "end\n"
-           "subsection Contact\n"
-           "  set Boundary 1 = curved\n"
-           "  set Boundary 2 = inner\n"
-           "  set Candidate centre = 0, 0\n"
-           "  set Candidate half width = 20\n"
-           "  set Contact direction = 0, -1\n"
-           "  set Friction coefficient = 0\n"
-           "  subsection Reference\n"
-           "    set Type = hertz\n"
-           "    set Hertz load = 200000\n"
-           "    set Radius 1 = 40\n"
-           "    set Radius 2 = -120\n"
-           "  end\n"
-           "end\n";
+    return hertz_prm(m,
+                     20,
+                     0,
+                     "  subsection Geometry\n"
+                     "    set Type = quarter annulus\n"
+                     "    set Inner radius = 120\n"
+                     "    set Outer radius = 360\n"
+                     "    set Centre = 0, 120\n"
+                     "    set Global refinements = 2\n"
+                     "    set Contact refinements = " +
+                       std::to_string(m + 1) +
+                       "\n"
+                       "    set Contact refinement radius = 21\n"
+                       "  end\n"
+                       "  subsection Boundary conditions\n"
+                       "    set Symmetry = y_axis\n"
+                       "    set Fixed = outer: x, y; x_axis: y\n"
+                       "  end\n",
+                     "inner",
+                     21,
+                     "  subsection Reference\n"
+                     "    set Type = hertz\n"
+                     "    set Hertz load = 200000\n"
+                     "    set Radius 1 = 40\n"
+                     "    set Radius 2 = -120\n"
+                     "  end\n");
   }
 } // namespace
 

@@ -18,42 +18,24 @@
 
 #include <algorithm>
 
+#include "mesh_test_tools.h"
 #include <gtest/gtest.h>
 
 namespace
 {
   using namespace dealii;
 
+  // The brick [0, 2] x [0, 1] (x [0, 1.5]) of 3 cells per direction, with
+  // the boundary names of the rectangle/box geometry.
   template <int dim>
   void
   make_body(dpana::Body<dim> &body)
   {
-    auto &tria = body.triangulation();
-    GridGenerator::subdivided_hyper_rectangle_with_simplices(
-      tria,
-      std::vector<unsigned int>(dim, 3),
-      Point<dim>(),
-      dim == 2 ? Point<dim>(2, 1) : Point<dim>(2, 1, 1.5));
-    const double upper[3] = {2, 1, 1.5};
-    for (const auto &face : tria.active_face_iterators())
-      if (face->at_boundary())
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            if (std::abs(face->center()[d]) < 1e-12)
-              face->set_boundary_id(2 * d);
-            else if (std::abs(face->center()[d] - upper[d]) < 1e-12)
-              face->set_boundary_id(2 * d + 1);
-          }
-    std::map<std::string, types::boundary_id> names = {{"left", 0},
-                                                       {"right", 1},
-                                                       {"bottom", 2},
-                                                       {"top", 3}};
-    if (dim == 3)
-      {
-        names["front"] = 4;
-        names["back"]  = 5;
-      }
-    body.set_boundary_names(names);
+    body.set_boundary_names(
+      dpana::test::make_named_brick(body.triangulation(),
+                                    3,
+                                    dim == 2 ? Point<dim>(2, 1) :
+                                               Point<dim>(2, 1, 1.5)));
   }
 
   template <int dim>

@@ -84,13 +84,19 @@ namespace dpana
      * @p half_width of the origin, contact direction (0, -1), friction
      * coefficient @p mu. Without @p foundation the obstacle is the rigid
      * plane y = 0; otherwise @p foundation is the text of the subsections
-     * of Body 2 (its boundary `top` is the other side of the contact).
+     * of Body 2, whose boundary @p boundary_2 is the other side of the
+     * contact. @p refinement_radius is the radius of the contact
+     * refinements of the cylinder (mm), @p contact holds more entries of
+     * the Contact subsection (e.g. a Reference subsection).
      */
     inline std::string
     hertz_prm(const unsigned int m,
               const double       half_width,
               const double       mu,
-              const std::string &foundation = "")
+              const std::string &foundation        = "",
+              const std::string &boundary_2        = "top",
+              const double       refinement_radius = 14,
+              const std::string &contact           = "")
     {
       return std::string("set Dimension = 2\n") +
              (foundation.empty() ? "" : "set Number of bodies = 2\n") +
@@ -103,7 +109,9 @@ namespace dpana
              "    set Contact refinements = " +
              std::to_string(m) +
              "\n"
-             "    set Contact refinement radius = 14\n"
+             "    set Contact refinement radius = " +
+             std::to_string(refinement_radius) +
+             "\n"
              "  end\n"
              "  subsection Boundary conditions\n"
              "    set Symmetry = axis\n"
@@ -117,16 +125,16 @@ namespace dpana
                 "subsection Body 2\n" + foundation + "end\n") +
              "subsection Contact\n"
              "  set Boundary 1 = curved\n"
-             "  set Boundary 2 = top\n"
+             "  set Boundary 2 = " +
+             boundary_2 +
+             "\n"
              "  set Candidate centre = 0, 0\n"
              "  set Candidate half width = " +
              std::to_string(half_width) +
              "\n"
              "  set Contact direction = 0, -1\n"
              "  set Friction coefficient = " +
-             std::to_string(mu) +
-             "\n"
-             "end\n";
+             std::to_string(mu) + "\n" + contact + "end\n";
     }
   } // namespace test
 } // namespace dpana
