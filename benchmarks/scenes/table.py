@@ -29,8 +29,7 @@ def zones_text(zones):
 def reference_text(refs):
     """The references of a run and its relative errors against them."""
     texts, errors = [], []
-    for ref in refs:
-        v = ref
+    for v in refs:
         if v["type"] == "uniform":
             texts.append("exact N = %g" % v["N"])
             errors.append("max |ΔN|/|N| %.1e, max |T|/|N| %.1e" % (v["max_N_error"], v["max_T"]))

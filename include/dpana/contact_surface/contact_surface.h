@@ -275,7 +275,7 @@ namespace dpana
       std::set<unsigned int>                      excluded_vertices;
 
       void
-      collect_faces(const dealii::Triangulation<dim> &tria);
+      collect_faces(const dealii::Triangulation<dim> &tria, const double w);
       void
       group_faces();
       bool

@@ -79,14 +79,15 @@ namespace dpana
     //
     // A face of a P1 simplex mesh is flat: its area, centroid and normal
     // follow from its vertices. The normal is turned outwards by comparing
-    // with the centre of the cell.
+    // with the centre of the cell. Faces whose centroid lies outside the
+    // candidate region of half width w (w <= 0: no region) are left out.
     template <int dim>
     void
-    ContactSurface<dim>::collect_faces(const dealii::Triangulation<dim> &tria)
+    ContactSurface<dim>::collect_faces(const dealii::Triangulation<dim> &tria,
+                                       const double                      w)
     {
       faces.clear();
       excluded_vertices.clear();
-      const double w = opts.region_half_width;
       for (const auto &cell : tria.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           {
@@ -147,7 +148,7 @@ namespace dpana
                                const Options                    &options)
     {
       opts = options;
-      collect_faces(tria);
+      collect_faces(tria, opts.region_half_width);
 
       // The surface normal: the given contact direction, or the
       // area-weighted mean of the outward normals of the faces.
@@ -460,10 +461,8 @@ namespace dpana
       // Every face of the boundary is a candidate (the faces that straddle
       // the edge of the candidate region are needed to cover the first
       // body's faces there); the candidate region acts on the first body.
-      opts                   = options;
-      opts.region_half_width = 0;
-      collect_faces(tria);
       opts = options;
+      collect_faces(tria, 0);
       {
         std::vector<Face<dim>> facing;
         for (const auto &F : faces)

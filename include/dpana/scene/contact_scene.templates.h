@@ -211,7 +211,7 @@ namespace dpana
           try
             {
               reference_table.push_back(
-                {std::stod(v[cs]), std::stod(v[cN]), std::stod(v[cT])});
+                {{std::stod(v[cs]), std::stod(v[cN]), std::stod(v[cT])}});
             }
           catch (const std::exception &)
             {
@@ -528,7 +528,6 @@ namespace dpana
     void
     ContactScene<dim>::print_comparison(std::ostream &out) const
     {
-      const auto &res = summary_.result;
       out << std::setprecision(6);
       out << "Results: contact half width a = " << summary_.half_width
           << " mm (outer edge of the last element in contact, known to its "
@@ -668,7 +667,7 @@ namespace dpana
             auto it =
               std::lower_bound(ref.begin(),
                                ref.end(),
-                               std::array<double, 3>{s, -1e300, -1e300});
+                               std::array<double, 3>{{s, -1e300, -1e300}});
             const auto &b = *it, &a = *(it - 1);
             return a[c] + (b[c] - a[c]) * (s - a[0]) / (b[0] - a[0]);
           };
