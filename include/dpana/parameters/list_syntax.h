@@ -4,6 +4,9 @@
 #ifndef dpana_parameters_list_syntax_h
 #define dpana_parameters_list_syntax_h
 
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -77,6 +80,33 @@ namespace dpana
     parse_component_values(const std::string &text,
                            const unsigned int dim,
                            const std::string &parameter);
+
+    /**
+     * Parse a point of @p dim finite coordinates "x, y(, z)" (mm). The one
+     * parser of points and vectors of every component: a NaN, an infinity,
+     * a missing or an extra coordinate is refused with a one-line message
+     * naming @p parameter.
+     */
+    template <int dim>
+    dealii::Point<dim>
+    parse_point(const std::string &text, const std::string &parameter)
+    {
+      const std::vector<double> x = parse_doubles(text, dim, parameter);
+      dealii::Point<dim>        p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = x[d];
+      return p;
+    }
+
+    /**
+     * Parse a vector of @p dim finite components, as parse_point().
+     */
+    template <int dim>
+    dealii::Tensor<1, dim>
+    parse_vector(const std::string &text, const std::string &parameter)
+    {
+      return parse_point<dim>(text, parameter);
+    }
   } // namespace parameters
 } // namespace dpana
 
