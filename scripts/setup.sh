@@ -18,6 +18,7 @@ packages=(
   libdeal.ii-dev        # finite elements (deal.II 9.4)
   libeigen3-dev         # dense algebra and the CHOLMOD interface
   libsuitesparse-dev    # CHOLMOD sparse Cholesky
+  nlohmann-json3-dev    # summary.json
   libgtest-dev          # unit tests
   numdiff               # regression runs compared with reference output
   python3 python3-matplotlib python3-numpy # plots of results and benchmarks

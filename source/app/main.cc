@@ -4,10 +4,11 @@
 //
 // The dpana executable:
 //
-//   dpana FILE.prm                    run the scene of FILE.prm: a contact
-//                                     run if the file has a subsection
-//                                     Contact (doc/contact.md), otherwise
-//                                     an elastic run of one body
+//   dpana FILE.prm                    run the scene of FILE.prm: its bodies
+//                                     and, if the file has a subsection
+//                                     Contact, their contact (doc/contact.md);
+//                                     the phases are those of
+//                                     dpana::scene::Scene (scene/scene.h)
 //   dpana --print-parameters [FILE]   print the documented parameter file
 //                                     (defaults, or FILE's values completed
 //                                     with the defaults) and exit
@@ -19,44 +20,16 @@
 // converge exits with status 2 (unless Contact / Allow non-converged).
 
 #include <dpana/base/exceptions.h>
-#include <dpana/base/simulation.h>
 #include <dpana/parameters/parameters.h>
-#include <dpana/scene/contact_scene.h>
+#include <dpana/scene/run.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 
 #include <iostream>
 #include <string>
 
 namespace
 {
-  template <int dim>
-  int
-  run(const std::string &filename, const bool print_parameters)
-  {
-    dealii::ParameterHandler prm;
-    dpana::parameters::declare_dimension(prm);
-    dpana::Simulation<dim>::declare_parameters(prm);
-    if (!filename.empty())
-      dpana::parameters::parse_file(prm, filename);
-
-    if (print_parameters)
-      {
-        std::cout << "# dpana parameter file (Dimension = " << dim
-                  << "); units: mm, N, MPa\n";
-        prm.print_parameters(std::cout,
-                             dealii::ParameterHandler::PRM |
-                               dealii::ParameterHandler::KeepDeclarationOrder);
-        return 0;
-      }
-
-    dpana::Simulation<dim> simulation;
-    simulation.parse_parameters(prm);
-    simulation.run(prm);
-    return 0;
-  }
-
   void
   usage(std::ostream &out)
   {
@@ -99,34 +72,12 @@ main(int argc, char **argv)
           return 1;
         }
 
-      // The one pre-scan of the file: dimension, number of bodies, and
-      // whether it describes a contact run.
-      const dpana::parameters::FileOutline outline =
-        filename.empty() ? dpana::parameters::FileOutline() :
-                           dpana::parameters::scan_file(filename);
-
-      // Contact runs have their own driver (bodies, condensation, contact
-      // solver, recovery, output) and their own parameter set.
-      if (outline.has_contact)
+      if (print_parameters)
         {
-          if (!print_parameters)
-            return dpana::scene::run_contact(filename, outline);
-          dealii::ParameterHandler prm;
-          dpana::scene::declare_parameters(prm,
-                                           outline.dimension,
-                                           outline.n_bodies);
-          dpana::parameters::parse_file(prm, filename);
-          std::cout << "# dpana contact parameter file (Dimension = "
-                    << outline.dimension << "); units: mm, N, MPa\n";
-          prm.print_parameters(
-            std::cout,
-            dealii::ParameterHandler::PRM |
-              dealii::ParameterHandler::KeepDeclarationOrder);
+          dpana::scene::print_parameters(filename, std::cout);
           return 0;
         }
-
-      return outline.dimension == 2 ? run<2>(filename, print_parameters) :
-                                      run<3>(filename, print_parameters);
+      return dpana::scene::run(filename);
     }
   catch (const std::exception &e)
     {

@@ -1,12 +1,12 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
-
 #include <dpana/base/exceptions.h>
-#include <dpana/output/output.templates.h>
+#include <dpana/output/output.h>
 
-#include <cctype>
-#include <iomanip>
+#include <deal.II/numerics/data_out.h>
+
+#include <fstream>
 
 namespace dpana
 {
@@ -15,20 +15,31 @@ namespace dpana
     void
     Parameters::declare_parameters(dealii::ParameterHandler &prm)
     {
+      using namespace dealii::Patterns;
       prm.declare_entry(
         "Directory",
         "output",
-        dealii::Patterns::Anything(),
+        Anything(),
         "Directory of the results, relative to the working directory. It is "
-        "created after the input has been checked and the meshes built; "
-        "files of an earlier run in it are overwritten. It receives the "
-        "parameters used (parameters.prm, parameters.json), one VTU + PVD "
-        "per body, summary.json (results) and timings.json.");
+        "created when the results are written; files of an earlier run in "
+        "it are overwritten. A run that fails removes it again if it "
+        "created it.");
       prm.declare_entry("Write VTU",
                         "true",
-                        dealii::Patterns::Bool(),
+                        Bool(),
                         "Write the VTU/PVD files of the bodies (displacement "
                         "in mm, stresses in MPa).");
+      prm.declare_entry("Plot",
+                        "true",
+                        Bool(),
+                        "Contact runs: write contact.png, the tractions along "
+                        "the contact surface (python3 with matplotlib).");
+      prm.declare_entry("Write FCLIB",
+                        "false",
+                        Bool(),
+                        "Contact runs: write the condensed contact problem to "
+                        "problem.hdf5, an FCLIB local problem (HDF5) for "
+                        "other contact solvers.");
     }
 
 
@@ -36,41 +47,94 @@ namespace dpana
     void
     Parameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      directory = prm.get("Directory");
-      write_vtu = prm.get_bool("Write VTU");
+      directory   = prm.get("Directory");
+      write_vtu   = prm.get_bool("Write VTU");
+      plot        = prm.get_bool("Plot");
+      write_fclib = prm.get_bool("Write FCLIB");
       if (directory.empty())
         throw InputError("Output / Directory: must not be empty");
     }
 
 
 
-    std::string
-    file_stem(const std::string &body_name)
+    template <int dim>
+    void
+    write_vtu_file(const Body<dim> &body, const std::string &filename)
     {
-      std::string stem;
-      for (const char c : body_name)
-        stem +=
-          std::isalnum(static_cast<unsigned char>(c)) ?
-            static_cast<char>(std::tolower(static_cast<unsigned char>(c))) :
-            '-';
-      return stem;
+      dealii::DataOut<dim> data_out;
+      data_out.attach_dof_handler(body.dof_handler());
+      data_out.add_data_vector(
+        body.solution(),
+        std::vector<std::string>(dim, "displacement"),
+        dealii::DataOut<dim>::type_dof_data,
+        std::vector<
+          dealii::DataComponentInterpretation::DataComponentInterpretation>(
+          dim,
+          dealii::DataComponentInterpretation::component_is_part_of_vector));
+
+      // Stress components as cell data: the strain of a P1 field is constant
+      // in each cell.
+      const unsigned int n_cells = body.triangulation().n_active_cells();
+      const auto        &stress  = body.cell_stress();
+      std::vector<std::pair<std::string, std::pair<unsigned, unsigned>>>
+        components;
+      if (dim == 2)
+        components = {{"stress_xx", {0, 0}},
+                      {"stress_yy", {1, 1}},
+                      {"stress_xy", {0, 1}}};
+      else
+        components = {{"stress_xx", {0, 0}},
+                      {"stress_yy", {1, 1}},
+                      {"stress_zz", {2, 2}},
+                      {"stress_xy", {0, 1}},
+                      {"stress_yz", {1, 2}},
+                      {"stress_xz", {0, 2}}};
+      std::vector<dealii::Vector<double>> cell_data;
+      for (const auto &[name, ij] : components)
+        {
+          dealii::Vector<double> v(n_cells);
+          for (unsigned int c = 0; c < n_cells; ++c)
+            v[c] = stress[c][ij.first][ij.second];
+          cell_data.push_back(v);
+        }
+      if (dim == 2)
+        {
+          cell_data.emplace_back(body.cell_out_of_plane_stress().begin(),
+                                 body.cell_out_of_plane_stress().end());
+          components.push_back({"stress_zz", {2, 2}});
+        }
+      cell_data.emplace_back(body.cell_von_mises().begin(),
+                             body.cell_von_mises().end());
+      components.push_back({"von_mises", {0, 0}});
+      for (unsigned int k = 0; k < cell_data.size(); ++k)
+        data_out.add_data_vector(cell_data[k],
+                                 components[k].first,
+                                 dealii::DataOut<dim>::type_cell_data);
+
+      data_out.build_patches(body.mapping());
+
+      std::ofstream out(filename);
+      data_out.write_vtu(out);
+      AssertThrow(out, dealii::ExcIO());
     }
 
 
 
+    template <int dim>
     void
-    write_timings(const std::map<std::string, double> &timings,
-                  std::ostream                        &out)
+    write_bodies(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                 const std::string                             &directory)
     {
-      out << "{";
-      bool first = true;
-      for (const auto &[name, seconds] : timings)
+      std::vector<std::pair<double, std::string>> records;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          out << (first ? "\n" : ",\n") << "  \"" << internal::escape(name)
-              << "\": " << std::setprecision(6) << seconds;
-          first = false;
+          const std::string name = "body_" + std::to_string(b + 1) + ".vtu";
+          write_vtu_file(*bodies[b], directory + "/" + name);
+          records.emplace_back(0.0, name);
         }
-      out << "\n}\n";
+      std::ofstream pvd(directory + "/bodies.pvd");
+      dealii::DataOutBase::write_pvd_record(pvd, records);
+      AssertThrow(pvd, dealii::ExcIO());
     }
 
 
@@ -79,13 +143,11 @@ namespace dpana
     write_vtu_file(const Body<2> &, const std::string &);
     template void
     write_vtu_file(const Body<3> &, const std::string &);
-    template std::vector<std::string>
-    write_vtu(const Body<2> &, const std::string &);
-    template std::vector<std::string>
-    write_vtu(const Body<3> &, const std::string &);
     template void
-    write_body_summary(const Body<2> &, std::ostream &);
+    write_bodies(const std::vector<std::unique_ptr<Body<2>>> &,
+                 const std::string &);
     template void
-    write_body_summary(const Body<3> &, std::ostream &);
+    write_bodies(const std::vector<std::unique_ptr<Body<3>>> &,
+                 const std::string &);
   } // namespace output
 } // namespace dpana

@@ -8,8 +8,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <map>
-#include <ostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,11 +18,18 @@ namespace dpana
   {
     /**
      * The "Output" subsection: where a run writes its files, and which.
+     * Every run writes, into Directory: the parameters it used
+     * (parameters.prm, parameters.json), one VTU per body with a PVD record
+     * (body_1.vtu, body_2.vtu, bodies.pvd) and summary.json; a contact run
+     * adds contact_surface.vtu, contact.csv, contact.png and, if asked,
+     * problem.hdf5.
      */
     struct Parameters
     {
-      std::string directory = "output";
-      bool        write_vtu = true;
+      std::string directory   = "output";
+      bool        write_vtu   = true;
+      bool        plot        = true;
+      bool        write_fclib = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -32,49 +38,25 @@ namespace dpana
     };
 
     /**
-     * The file name stem of a body: "Body 1" -> "body-1".
-     */
-    std::string
-    file_stem(const std::string &body_name);
-
-    /**
      * Writes the VTU file @p filename of a solved body whose stresses have
      * been computed (Body::compute_stresses() or Body::postprocess()):
      * - point data "displacement" (mm), a vector (ParaView: Warp By Vector);
      * - cell data "stress_xx", "stress_yy", "stress_xy" (, "stress_zz",
      *   "stress_yz", "stress_xz") in MPa, constant in each P1 cell, with
      *   "stress_zz" the out-of-plane stress in 2D, and "von_mises" (MPa).
-     * The elastic runs and the contact runs both write their bodies with it.
      */
     template <int dim>
     void
     write_vtu_file(const Body<dim> &body, const std::string &filename);
 
     /**
-     * Writes DIRECTORY/STEM.vtu (by write_vtu_file()) and DIRECTORY/STEM.pvd
-     * for a solved and postprocessed body. Returns the names of the files
-     * written.
-     */
-    template <int dim>
-    std::vector<std::string>
-    write_vtu(const Body<dim> &body, const std::string &directory);
-
-    /**
-     * The JSON object of one body's results (no timings, so that it can be
-     * compared between runs): sizes, material, largest displacement and
-     * von Mises stress, load resultant, reactions, concentrated forces with
-     * the vertex that carried them.
+     * Writes DIRECTORY/body_N.vtu for every body and the record
+     * DIRECTORY/bodies.pvd that opens them together.
      */
     template <int dim>
     void
-    write_body_summary(const Body<dim> &body, std::ostream &out);
-
-    /**
-     * Writes a {"section": seconds, ...} JSON object.
-     */
-    void
-    write_timings(const std::map<std::string, double> &timings,
-                  std::ostream                        &out);
+    write_bodies(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                 const std::string                             &directory);
   } // namespace output
 } // namespace dpana
 

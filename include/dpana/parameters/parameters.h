@@ -15,10 +15,10 @@ namespace dpana
   {
     /**
      * What must be known of a parameter file before its entries can be
-     * declared: the bodies are templates on the space dimension, a contact
-     * run declares one subsection per body, and a file with a top-level
-     * `subsection Contact` is a contact run (dpana::scene) rather than an
-     * elastic run of one body (dpana::Simulation).
+     * declared: the bodies are templates on the space dimension, a run
+     * declares one subsection per body, and a file with a top-level
+     * `subsection Contact` declares the entries of the contact phases
+     * (dpana::scene::Scene).
      */
     struct FileOutline
     {

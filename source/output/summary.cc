@@ -1,0 +1,133 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#include <dpana/output/summary.h>
+
+#include <algorithm>
+#include <fstream>
+
+namespace dpana
+{
+  namespace output
+  {
+    namespace
+    {
+      template <int dim>
+      std::vector<double>
+      to_vector(const dealii::Tensor<1, dim> &v)
+      {
+        return std::vector<double>(v.begin_raw(), v.end_raw());
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    nlohmann::json
+    to_json(const Body<dim> &body)
+    {
+      const auto    &vm = body.cell_von_mises();
+      nlohmann::json j  = {
+        {"name", body.name()},
+        {"material", body.material().description(dim)},
+        {"cells", body.triangulation().n_active_cells()},
+        {"vertices", body.triangulation().n_used_vertices()},
+        {"dofs", body.dof_handler().n_dofs()},
+        {"constrained_dofs", body.constraints().n_constraints()},
+        {"max_displacement", body.max_displacement()},
+        {"max_von_mises",
+         vm.empty() ? 0.0 : *std::max_element(vm.begin(), vm.end())},
+        {"applied_load_resultant", to_vector(body.applied_load_resultant())}};
+      j["reactions"] = nlohmann::json::object();
+      for (const auto &[name, R] : body.reactions())
+        j["reactions"][name] = to_vector(R);
+      j["concentrated_forces"] = nlohmann::json::array();
+      for (const auto &cf : body.applied_concentrated_forces())
+        j["concentrated_forces"].push_back(
+          {{"point", to_vector(dealii::Tensor<1, dim>(cf.requested_point))},
+           {"vertex", to_vector(dealii::Tensor<1, dim>(cf.vertex))},
+           {"force", to_vector(cf.force)}});
+      return j;
+    }
+
+
+
+    nlohmann::json
+    to_json(const scene::ContactSummary &summary, const unsigned int dim)
+    {
+      const auto    &res = summary.result;
+      nlohmann::json j   = {
+        {"contact_elements", summary.n_elements},
+        {"converged", res.converged},
+        {"iterations", res.iterations},
+        {"residual", res.residual},
+        {"residual_figures",
+         {{"natural_map", res.figures.natural_map},
+          {"penetration", res.figures.penetration},
+          {"cone_violation", res.figures.cone_violation},
+          {"complementarity", res.figures.complementarity},
+          {"equilibrium", res.figures.equilibrium}}},
+        {"message", res.message},
+        {"asymmetry_of_A", summary.asymmetry},
+        {"contact_half_width", summary.half_width},
+        {"contact_half_width_element", summary.half_width_element},
+        {"contact_half_width_centroid", summary.half_width_centroid},
+        {"max_normal_traction", summary.max_pressure},
+        {"normal_resultant", summary.normal_resultant},
+        {"candidate_edge_warning", summary.candidate_edge_warning},
+        {"rigid_displacements",
+         std::vector<double>(res.alpha.begin(), res.alpha.end())}};
+      j["zones"] = nlohmann::json::array();
+      for (const auto &z : summary.zones)
+        {
+          nlohmann::json zone = {{"status", contact::to_string(z.status)},
+                                 {"s_from", z.from},
+                                 {"s_to", z.to}};
+          if (dim == 3)
+            {
+              zone["t_from"] = z.t_from;
+              zone["t_to"]   = z.t_to;
+            }
+          zone["elements"] = z.n_elements;
+          j["zones"].push_back(zone);
+        }
+      j["references"] = nlohmann::json::array();
+      for (const auto &c : summary.comparisons)
+        {
+          nlohmann::json r = {{"type", c.type}};
+          if (!c.file.empty())
+            r["file"] = c.file;
+          for (const auto &[name, value] : c.values)
+            r[name] = value;
+          j["references"].push_back(r);
+        }
+      return j;
+    }
+
+
+
+    nlohmann::json
+    to_json(const PhaseLog &phases)
+    {
+      return {{"timings", phases.timings()},
+              {"peak_memory_mb", phases.peak_memory()}};
+    }
+
+
+
+    void
+    write_json(const nlohmann::json &summary, const std::string &filename)
+    {
+      std::ofstream out(filename);
+      out << summary.dump(2) << '\n';
+      AssertThrow(out, dealii::ExcIO());
+    }
+
+
+
+    template nlohmann::json
+    to_json(const Body<2> &);
+    template nlohmann::json
+    to_json(const Body<3> &);
+  } // namespace output
+} // namespace dpana

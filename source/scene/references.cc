@@ -1,0 +1,301 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#include <dpana/base/exceptions.h>
+#include <dpana/io/csv.h>
+#include <dpana/scene/references.h>
+
+#include <deal.II/base/patterns.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace dpana
+{
+  namespace scene
+  {
+    namespace
+    {
+      // Relative difference of x from a reference value (0 if there is none).
+      double
+      relative(const double x, const double ref)
+      {
+        return ref != 0 ? (x - ref) / std::abs(ref) : 0.0;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    References<dim>::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.enter_subsection("Reference");
+      prm.declare_entry("Type",
+                        "none",
+                        Selection("none|uniform|hertz"),
+                        "Reference printed with the results: 'uniform' "
+                        "(every element N = Uniform normal traction, T = 0), "
+                        "'hertz' (plane strain Hertz formulas).");
+      prm.declare_entry("Uniform normal traction",
+                        "-50",
+                        Double(),
+                        "Expected uniform N (MPa, compressive < 0).");
+      prm.declare_entry("Hertz load",
+                        "200000",
+                        Double(0.),
+                        "Load P per unit length of the whole (not half) "
+                        "model (N/mm).");
+      prm.declare_entry("Radius 1",
+                        "40",
+                        Double(0.),
+                        "Radius of the cylinder (Body 1) (mm).");
+      prm.declare_entry("Radius 2",
+                        "0",
+                        Double(),
+                        "Radius of the other surface (mm): 0 flat, > 0 "
+                        "convex, < 0 a cavity of radius |Radius 2|.");
+      prm.declare_entry("Table half width",
+                        "0",
+                        Double(0.),
+                        "Contact half width a of a published table, e.g. the "
+                        "reference formulation's (mm); 0: none.");
+      prm.declare_entry("Table maximum pressure",
+                        "0",
+                        Double(0.),
+                        "-N_max of that table (MPa); 0: none.");
+      prm.declare_entry("Comparison file",
+                        "",
+                        Anything(),
+                        "CSV of another run (columns s, N, T) compared with "
+                        "this one, e.g. the 2D plane solution for a 3D run.");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    References<dim>::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Reference");
+      type                    = prm.get("Type");
+      uniform_normal_traction = prm.get_double("Uniform normal traction");
+      hertz_load              = prm.get_double("Hertz load");
+      radius_1                = prm.get_double("Radius 1");
+      radius_2                = prm.get_double("Radius 2");
+      table_half_width        = prm.get_double("Table half width");
+      table_max_pressure      = prm.get_double("Table maximum pressure");
+      comparison_file         = prm.get("Comparison file");
+      prm.leave_subsection();
+
+      if (type == "hertz" && !(hertz_load > 0 && radius_1 > 0))
+        throw InputError("Contact / Reference: Hertz load and Radius 1 must "
+                         "be positive for Type = hertz");
+      if (type == "hertz" && radius_2 < 0 && -radius_2 <= radius_1)
+        throw InputError("Contact / Reference / Radius 2: a cavity radius "
+                         "must exceed Radius 1");
+      load_comparison_file();
+    }
+
+
+
+    template <int dim>
+    void
+    References<dim>::load_comparison_file()
+    {
+      comparison_table.clear();
+      if (comparison_file.empty())
+        return;
+      const std::string what =
+        "Contact / Reference / Comparison file '" + comparison_file + "'";
+      if (!std::filesystem::exists(comparison_file))
+        {
+          std::cerr << "dpana: warning: " << what
+                    << " not found (run the scene that writes it first); "
+                       "no comparison is printed"
+                    << std::endl;
+          return;
+        }
+      const io::CsvTable table = io::read_csv(comparison_file, what);
+      const int          cs    = table.column({"s"});
+      const int          cN    = table.column({"N"});
+      const int          cT    = table.column({"T", "T1"});
+      if (cs < 0 || cN < 0 || cT < 0)
+        throw InputError(what + " has no columns s, N, T");
+      for (unsigned int i = 0; i < table.rows.size(); ++i)
+        comparison_table.push_back({{table.number(i, cs, what),
+                                     table.number(i, cN, what),
+                                     table.number(i, cT, what)}});
+      if (comparison_table.size() < 2)
+        throw InputError(what + " has fewer than two rows");
+      std::sort(comparison_table.begin(), comparison_table.end());
+    }
+
+
+
+    template <int dim>
+    std::vector<Comparison>
+    References<dim>::compare(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const contact_surface::ContactSurface<dim>    &surface,
+      const ContactSummary                          &summary) const
+    {
+      std::vector<Comparison> comparisons;
+      if (type == "uniform")
+        comparisons.push_back(uniform(summary));
+      if (type == "hertz")
+        for (auto &c : hertz(bodies, summary))
+          comparisons.push_back(std::move(c));
+      if (!comparison_table.empty())
+        comparisons.push_back(comparison_run(surface, summary));
+      return comparisons;
+    }
+
+
+
+    // Every element must carry N = N_ref and T = 0.
+    template <int dim>
+    Comparison
+    References<dim>::uniform(const ContactSummary &summary) const
+    {
+      const auto &r  = summary.result.r;
+      double      eN = 0, eT = 0;
+      for (unsigned int j = 0; j < summary.n_elements; ++j)
+        {
+          eN = std::max(eN, std::abs(r(dim * j) - uniform_normal_traction));
+          for (unsigned int k = 1; k < dim; ++k)
+            eT = std::max(eT, std::abs(r(dim * j + k)));
+        }
+      const double       scale = std::abs(uniform_normal_traction);
+      std::ostringstream out;
+      out << std::setprecision(6)
+          << "Reference (uniform state): N = " << uniform_normal_traction
+          << " MPa, T = 0 on every element; max |N - N_ref| / |N_ref| = "
+          << eN / scale << ", max |T| / |N_ref| = " << eT / scale;
+      return {"uniform",
+              out.str(),
+              {{"N", uniform_normal_traction},
+               {"max_N_error", eN / scale},
+               {"max_T", eT / scale}}};
+    }
+
+
+
+    template <int dim>
+    std::vector<Comparison>
+    References<dim>::hertz(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                           const ContactSummary &summary) const
+    {
+      const auto k = [](const Material &m) {
+        const double nu2 =
+          m.plane_state() == Material::PlaneState::plane_stress && dim == 2 ?
+            0. :
+            m.poissons_ratio() * m.poissons_ratio();
+        return (1 - nu2) / (M_PI * m.youngs_modulus());
+      };
+      const double k1 = k(bodies[0]->material());
+      const double k2 = bodies.size() > 1 ? k(bodies[1]->material()) : 0;
+      double       R  = radius_1;
+      if (radius_2 > 0)
+        R = radius_1 * radius_2 / (radius_1 + radius_2);
+      else if (radius_2 < 0)
+        R = radius_1 * (-radius_2) / (-radius_2 - radius_1);
+      const double a_H = std::sqrt(4 * hertz_load * (k1 + k2) * R);
+      const double N_H = 2 * hertz_load / (M_PI * a_H);
+      const double a = summary.half_width, N = summary.max_pressure;
+
+      std::ostringstream out;
+      out << std::setprecision(6) << "Reference (Hertz): a = " << a_H
+          << " mm, N_max = " << N_H << " MPa; relative errors of this run: a "
+          << std::showpos << relative(a, a_H) << " (centroid "
+          << relative(summary.half_width_centroid, a_H) << "), N_max "
+          << relative(N, N_H);
+      std::vector<Comparison> c{
+        {"hertz",
+         out.str(),
+         {{"a", a_H},
+          {"N_max", N_H},
+          {"a_error", relative(a, a_H)},
+          {"a_centroid_error", relative(summary.half_width_centroid, a_H)},
+          {"N_max_error", relative(N, N_H)}}}};
+      if (table_half_width > 0 || table_max_pressure > 0)
+        {
+          std::ostringstream t;
+          t << std::setprecision(6)
+            << "Reference (published table): a = " << table_half_width
+            << " mm, N_max = " << table_max_pressure
+            << " MPa; relative differences: a " << std::showpos
+            << relative(a, table_half_width) << ", N_max "
+            << relative(N, table_max_pressure);
+          c.push_back({"published table",
+                       t.str(),
+                       {{"a", table_half_width},
+                        {"N_max", table_max_pressure},
+                        {"a_difference", relative(a, table_half_width)},
+                        {"N_max_difference", relative(N, table_max_pressure)}}});
+        }
+      return c;
+    }
+
+
+
+    // N and T of the comparison run interpolated linearly in s at the
+    // centroids of this run's elements (in 3D those of the first row, t
+    // minimal: the symmetry plane).
+    template <int dim>
+    Comparison
+    References<dim>::comparison_run(
+      const contact_surface::ContactSurface<dim> &surface,
+      const ContactSummary                       &summary) const
+    {
+      const auto &ref    = comparison_table;
+      const auto  interp = [&](const double s, const unsigned int c) {
+        if (s <= ref.front()[0])
+          return ref.front()[c];
+        if (s >= ref.back()[0])
+          return ref.back()[c];
+        auto it = std::lower_bound(ref.begin(),
+                                   ref.end(),
+                                   std::array<double, 3>{{s, -1e300, -1e300}});
+        const auto &b = *it, &a = *(it - 1);
+        return a[c] + (b[c] - a[c]) * (s - a[0]) / (b[0] - a[0]);
+      };
+      double tmin = std::numeric_limits<double>::max();
+      for (const auto &e : surface.get_elements())
+        tmin = std::min(tmin, e.t_min);
+      double eN = 0, eT = 0, scale = 0;
+      for (const auto &r : ref)
+        scale = std::max(scale, std::abs(r[1]));
+      const auto &r = summary.result.r;
+      for (unsigned int j = 0; j < summary.n_elements; ++j)
+        {
+          const auto &e = surface.element(j);
+          if (dim == 3 && e.t_min > tmin + 1e-10 * (1 + std::abs(tmin)))
+            continue;
+          eN = std::max(eN, std::abs(r(dim * j) - interp(e.s, 1)));
+          eT = std::max(eT, std::abs(r(dim * j + 1) - interp(e.s, 2)));
+        }
+      std::ostringstream out;
+      out << std::setprecision(6) << "Reference (" << comparison_file
+          << "): max |N - N_ref| / max|N_ref| = " << eN / scale
+          << ", max |T - T_ref| / max|N_ref| = " << eT / scale;
+      return {"comparison file",
+              out.str(),
+              {{"max_N_difference", eN / scale},
+               {"max_T_difference", eT / scale}},
+              comparison_file};
+    }
+
+
+
+    template class References<2>;
+    template class References<3>;
+  } // namespace scene
+} // namespace dpana

@@ -1,0 +1,474 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#include <dpana/base/exceptions.h>
+#include <dpana/condensation/contact_problem.h>
+#include <dpana/io/fclib.h>
+#include <dpana/output/contact_output.h>
+#include <dpana/output/summary.h>
+#include <dpana/parameters/list_syntax.h>
+#include <dpana/scene/scene.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace dpana
+{
+  namespace scene
+  {
+    template <int dim>
+    Scene<dim>::Scene()
+      : phase_log(&std::cout)
+    {}
+
+    template <int dim>
+    Scene<dim>::~Scene() = default;
+
+
+
+    // @sect3{Parameters}
+    //
+    // Every component declares and reads its own entries: the bodies their
+    // subsections, the contact surface, the contact law, the solver, the
+    // condensation and the references theirs inside `subsection Contact`,
+    // the output its `subsection Output`.
+    template <int dim>
+    void
+    Scene<dim>::declare_parameters(dealii::ParameterHandler &prm,
+                                   const unsigned int        n_bodies,
+                                   const bool                with_contact)
+    {
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        {
+          prm.enter_subsection("Body " + std::to_string(b + 1));
+          Body<dim>::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      if (with_contact)
+        {
+          prm.enter_subsection("Contact");
+          contact_surface::Parameters<dim>::declare_parameters(prm);
+          condensation::Parameters::declare_parameters(prm);
+          ContactLaw::declare_parameters(prm);
+          SolverParameters::declare_parameters(prm);
+          References<dim>::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      prm.enter_subsection("Output");
+      output::Parameters::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::parse_parameters(dealii::ParameterHandler &prm,
+                                 const unsigned int        n_bodies,
+                                 const bool                contact)
+    {
+      with_contact = contact;
+      bodies.clear();
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        {
+          const std::string name = "Body " + std::to_string(b + 1);
+          bodies.push_back(std::make_unique<Body<dim>>(name));
+          prm.enter_subsection(name);
+          bodies.back()->parse_parameters(prm);
+          prm.leave_subsection();
+        }
+      if (with_contact)
+        {
+          prm.enter_subsection("Contact");
+          surface_parameters.parse_parameters(prm);
+          condensation_parameters.parse_parameters(prm);
+          law.parse_parameters(prm, dim);
+          solver.parse_parameters(prm);
+          references.parse_parameters(prm);
+          prm.leave_subsection();
+        }
+      prm.enter_subsection("Output");
+      output_parameters.parse_parameters(prm);
+      prm.leave_subsection();
+
+      std::ostringstream text, json;
+      prm.print_parameters(text,
+                           dealii::ParameterHandler::ShortPRM |
+                             dealii::ParameterHandler::KeepDeclarationOrder);
+      prm.print_parameters(json, dealii::ParameterHandler::JSON);
+      parameters_prm  = text.str();
+      parameters_json = json.str();
+    }
+
+
+
+    // @sect3{Phase 1: the bodies}
+    //
+    // Mesh, constraints, stiffness matrix and load vector of every body.
+    // Without contact every body must be held by its supports; with contact
+    // a body may float, and the condensation holds it by fictitious
+    // supports whose reactions the contact problem drives to zero.
+    template <int dim>
+    void
+    Scene<dim>::assemble()
+    {
+      for (auto &body : bodies)
+        {
+          const auto phase =
+            phase_log.phase("assembly", "assembling " + body->name());
+          body->create_mesh();
+          body->setup();
+          if (!with_contact)
+            body->check_held();
+          body->assemble();
+        }
+      if (!quiet)
+        print_bodies();
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::print_bodies() const
+    {
+      for (const auto &body : bodies)
+        {
+          std::cout << "        " << body->name() << ": "
+                    << body->geometry_description() << "; "
+                    << body->dof_handler().n_dofs() << " dofs, "
+                    << body->constraints().n_constraints() << " constrained; "
+                    << body->material().description(dim);
+          if (!body->free_rigid_modes().empty())
+            {
+              std::cout << "; free rigid motions:";
+              for (const auto &m : body->free_rigid_modes())
+                std::cout << " " << m.description;
+            }
+          std::cout << std::endl;
+          for (const auto &cf : body->applied_concentrated_forces())
+            std::cout << "        " << body->name() << ": concentrated force ("
+                      << cf.force << ") requested at (" << cf.requested_point
+                      << ") applied at vertex (" << cf.vertex << "), "
+                      << cf.vertex.distance(cf.requested_point) << " mm away"
+                      << std::endl;
+        }
+    }
+
+
+
+    // @sect3{Phase 2: the contact surface}
+    template <int dim>
+    void
+    Scene<dim>::build_contact_surface()
+    {
+      Assert(with_contact, dealii::ExcMessage("A run without contact."));
+      const auto phase = phase_log.phase("contact surface");
+      surfaces.clear();
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const auto options =
+            surface_parameters.surface_options(b,
+                                               bodies[b]->name(),
+                                               bodies[b]->boundary_names());
+          surfaces.push_back(
+            std::make_unique<contact_surface::ContactSurface<dim>>());
+          if (b == 0)
+            surfaces[0]->build(bodies[0]->triangulation(), options);
+          else
+            surfaces[1]->pair(bodies[1]->triangulation(),
+                              options,
+                              *surfaces[0]);
+        }
+      if (bodies.size() == 1)
+        {
+          // The rigid obstacle: the plane through the obstacle point (by
+          // default the first contact point of the candidate surface) normal
+          // to the contact direction.
+          surfaces[0]->set_plane_gap(
+            surface_parameters.obstacle_point_given ?
+              surface_parameters.obstacle_point :
+              surfaces[0]->first_contact_point());
+        }
+      if (!quiet)
+        for (const auto &s : surfaces)
+          std::cout << "        Candidate contact surface: " << s->description()
+                    << std::endl;
+    }
+
+
+
+    // @sect3{Phase 3: condensation}
+    //
+    // Each body is factored once and condensed on its candidate surface:
+    // A_b = V_b^T K_b^-1 V_b and the load term. The contact problem then
+    // adds the relative quantities of the two sides.
+    template <int dim>
+    void
+    Scene<dim>::condense()
+    {
+      condensers.clear();
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          condensers.push_back(
+            std::make_unique<condensation::Condenser<dim>>(*bodies[b],
+                                                           *surfaces[b]));
+          {
+            const auto phase =
+              phase_log.phase("factorization",
+                              "factorising " + bodies[b]->name());
+            condensers[b]->factorize();
+          }
+          const auto phase =
+            phase_log.phase("condensation", "condensing " + bodies[b]->name());
+          condensers[b]->assemble_coupling();
+          condensers[b]->condense(condensation_parameters.columns_per_solve);
+        }
+      std::vector<const condensation::Condenser<dim> *> parts;
+      for (const auto &c : condensers)
+        parts.push_back(c.get());
+      problem_ = condensation::assemble_contact_problem(
+        parts, *surfaces[0], law.friction, law.cone, law.polygon_sides);
+      summary_.asymmetry = condensation::largest_asymmetry(parts);
+      if (quiet)
+        return;
+      std::cout << "        Condensation: " << problem_.n_elements()
+                << " contact elements, " << problem_.A.rows() << " unknowns, "
+                << problem_.G.rows() << " equality rows (fictitious supports:";
+      for (const auto &c : condensers)
+        std::cout << " " << c->fictitious_supports().size();
+      std::cout << "), relative asymmetry of A before symmetrisation "
+                << summary_.asymmetry << std::endl;
+    }
+
+
+
+    // @sect3{Phase 4: the solve}
+    template <int dim>
+    void
+    Scene<dim>::solve()
+    {
+      if (!with_contact)
+        {
+          for (auto &body : bodies)
+            {
+              const auto phase = phase_log.phase(
+                "solve",
+                "factorising and solving " + body->name() +
+                  " (sparse Cholesky)");
+              body->solve();
+            }
+          return;
+        }
+      {
+        const auto phase = phase_log.phase(
+          "contact solve",
+          "solving the contact problem (" +
+            contact::to_string(solver.options.type) + ")");
+        try
+          {
+            summary_.result = contact::solve(problem_, solver.options);
+          }
+        catch (const std::invalid_argument &e)
+          {
+            throw InputError(std::string("Contact: ") + e.what());
+          }
+      }
+      const auto &r = summary_.result;
+      if (!quiet)
+        std::cout << "        Contact solver "
+                  << contact::to_string(solver.options.type) << ": "
+                  << (r.converged ? "converged" : "NOT converged") << " in "
+                  << r.iterations << " iterations, residual " << r.residual
+                  << " (" << r.message << ")" << std::endl;
+    }
+
+
+
+    // @sect3{Phase 5: recovery}
+    //
+    // With contact, u_b = K_b^-1 (f_b + V_b r) plus the rigid displacements
+    // of the floating bodies; without, the solution is already there. Then
+    // the stresses, and the measures of the contact zone.
+    template <int dim>
+    void
+    Scene<dim>::recover()
+    {
+      const auto phase = phase_log.phase("recovery");
+      if (!with_contact)
+        {
+          for (auto &body : bodies)
+            body->postprocess();
+          return;
+        }
+      unsigned int offset = 0;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          const unsigned int    mb    = condensers[b]->n_free_modes();
+          const Eigen::VectorXd alpha = summary_.result.alpha.segment(offset, mb);
+          offset += mb;
+          bodies[b]->set_solution(
+            condensers[b]->recover(summary_.result.r, alpha));
+          bodies[b]->compute_stresses();
+        }
+      summarise(*surfaces[0],
+                problem_,
+                surface_parameters.region_centre,
+                summary_);
+      summary_.comparisons =
+        references.compare(bodies, *surfaces[0], summary_);
+    }
+
+
+
+    // @sect3{Phase 6: output}
+    //
+    // The output directory is created only now, when every check of the
+    // input has passed and the answer exists; if writing fails, a directory
+    // this run created is removed again, so that a failed run leaves no
+    // output behind.
+    template <int dim>
+    void
+    Scene<dim>::write_output()
+    {
+      namespace fs = std::filesystem;
+      const fs::path directory(output_parameters.directory);
+      const bool     existed = fs::exists(directory);
+      try
+        {
+          {
+            const auto phase = phase_log.phase(
+              "output", "writing output to " + directory.string());
+            fs::create_directories(directory);
+            std::ofstream(directory / "parameters.prm") << parameters_prm;
+            std::ofstream(directory / "parameters.json") << parameters_json;
+            if (output_parameters.write_vtu)
+              output::write_bodies(bodies, directory.string());
+            if (with_contact)
+              write_contact_output(directory.string());
+          }
+          write_summary(directory.string());
+        }
+      catch (...)
+        {
+          if (!existed)
+            {
+              std::error_code ec;
+              fs::remove_all(directory, ec);
+            }
+          throw;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::write_contact_output(const std::string &directory)
+    {
+      output::write_contact_surface_vtu(*surfaces[0],
+                                        summary_,
+                                        directory + "/contact_surface.vtu");
+      const std::string csv = directory + "/contact.csv";
+      output::write_contact_csv(*surfaces[0], summary_, csv);
+      if (output_parameters.write_fclib)
+        {
+          // The condensed problem, for other contact solvers.
+          const std::string scene =
+            scene_file.empty() ? std::string("(unnamed)") : scene_file;
+          io::FclibInfo info;
+          info.title       = "dpana contact scene " + scene;
+          info.description = "Condensed frictional contact problem of the "
+                             "dpana scene " +
+                             scene + ", dimension " + std::to_string(dim) +
+                             ", " + std::to_string(problem_.n_elements()) +
+                             " contact elements";
+          io::write_fclib_local(directory + "/problem.hdf5", problem_, info);
+        }
+      if (output_parameters.plot)
+        {
+          const std::string warning =
+            output::plot_contact(csv, directory + "/contact.png");
+          if (!warning.empty())
+            std::cout << "warning: " << warning << std::endl;
+        }
+    }
+
+
+
+    // One summary for every run: the bodies, the contact answer if there is
+    // one, the time and peak memory of every phase.
+    template <int dim>
+    void
+    Scene<dim>::write_summary(const std::string &directory) const
+    {
+      nlohmann::json summary = output::to_json(phase_log);
+      summary["dimension"]   = dim;
+      summary["bodies"]      = nlohmann::json::array();
+      for (const auto &body : bodies)
+        summary["bodies"].push_back(output::to_json(*body));
+      if (with_contact)
+        {
+          summary["contact"] = output::to_json(summary_, dim);
+          summary["contact"]["friction_coefficient"] = law.friction;
+          summary["contact"]["solver"] =
+            contact::to_string(solver.options.type);
+        }
+      output::write_json(summary, directory + "/summary.json");
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::run(const bool output)
+    {
+      assemble();
+      if (with_contact)
+        {
+          build_contact_surface();
+          condense();
+        }
+      solve();
+      recover();
+      if (output)
+        write_output();
+      if (quiet)
+        return;
+      if (with_contact)
+        print(summary_, dim, std::cout);
+      else
+        print_body_results();
+      phase_log.print(std::cout);
+      if (output)
+        std::cout << "Output written to " << output_parameters.directory << "/"
+                  << std::endl;
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::print_body_results() const
+    {
+      for (const auto &body : bodies)
+        {
+          std::cout << "        " << body->name()
+                    << ": max |u| = " << body->max_displacement()
+                    << " mm; load resultant ("
+                    << body->applied_load_resultant() << ")";
+          for (const auto &[name, R] : body->reactions())
+            std::cout << "; reaction " << name << " (" << R << ")";
+          std::cout << std::endl;
+        }
+    }
+
+
+    template class Scene<2>;
+    template class Scene<3>;
+  } // namespace scene
+} // namespace dpana
