@@ -1,12 +1,213 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
-#include <dpana/condensation/condenser.templates.h>
+#include <dpana/base/exceptions.h>
+#include <dpana/condensation/condenser.h>
+
+#include <Eigen/QR>
+
+#include <algorithm>
 
 namespace dpana
 {
   namespace condensation
   {
+    template <int dim>
+    Condenser<dim>::Condenser(
+      const Body<dim>                            &body,
+      const contact_surface::ContactSurface<dim> &surface)
+      : body(body)
+      , surface(surface)
+    {
+    }
+
+
+
+    // @sect3{The coupling operator V}
+    //
+    // Column dim j + k of V holds the nodal forces of a unit traction along
+    // direction k of contact element j (n, then tau): V_ik = int phi_i e_k
+    // over the element's projection. On a face, the P1 shape function of
+    // one of the face's vertices is the barycentric coordinate of that
+    // vertex (the others vanish), so each quadrature point of the element
+    // (ContactElement::points, exact for this linear integrand) adds
+    // weight * lambda_v * e_k to the rows of vertex v. In a P1 system the
+    // base index of a cell's degree of freedom is the number of the cell
+    // vertex it sits on.
+    template <int dim>
+    void
+    Condenser<dim>::assemble_coupling()
+    {
+      const auto                                  &fe = body.fe();
+      const unsigned int                           n  = fe.n_dofs_per_cell();
+      std::vector<dealii::types::global_dof_index> local(n);
+      std::vector<Eigen::Triplet<double>>          triplets;
+
+      const auto &faces = surface.get_faces();
+      for (unsigned int j = 0; j < surface.n_elements(); ++j)
+        {
+          const auto                             &element = surface.element(j);
+          std::array<dealii::Tensor<1, dim>, dim> directions;
+          directions[0] = element.normal;
+          for (unsigned int k = 1; k < dim; ++k)
+            directions[k] = element.tangents[k - 1];
+          for (const auto &p : element.points)
+            {
+              const auto &F = faces[p.face];
+              const typename dealii::DoFHandler<dim>::active_cell_iterator cell(
+                &body.triangulation(),
+                F.cell->level(),
+                F.cell->index(),
+                &body.dof_handler());
+              cell->get_dof_indices(local);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const auto [c, b] = fe.system_to_component_index(i);
+                  const auto vertex = cell->vertex_index(b);
+                  for (unsigned int v = 0; v < F.vertices.size(); ++v)
+                    if (F.vertices[v] == vertex && p.barycentric[v] != 0.0)
+                      for (unsigned int k = 0; k < dim; ++k)
+                        if (directions[k][c] != 0.0)
+                          triplets.emplace_back(local[i],
+                                                dim * j + k,
+                                                p.weight * p.barycentric[v] *
+                                                  directions[k][c]);
+                }
+            }
+        }
+      V.resize(body.dof_handler().n_dofs(), dim * surface.n_elements());
+      V.setFromTriplets(triplets.begin(), triplets.end());
+    }
+
+
+
+    // @sect3{Fictitious supports and factorisation}
+    template <int dim>
+    void
+    Condenser<dim>::factorize()
+    {
+      const auto &modes = body.free_rigid_modes();
+      const auto &Rall  = body.rigid_mode_vectors();
+      R.resize(Rall.rows(), modes.size());
+      for (unsigned int k = 0; k < modes.size(); ++k)
+        R.col(k) = Rall * modes[k].coefficients;
+
+      const auto &body_constraints = body.constraints();
+      const auto  n_dofs           = body.dof_handler().n_dofs();
+
+      // The supports: among the free degrees of freedom, the m rows of R
+      // picked by the column pivoting of a QR factorisation of R_F^T, so that
+      // R restricted to them is as well conditioned as possible.
+      supports.clear();
+      std::vector<unsigned int> free;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        if (!body_constraints.is_constrained(i))
+          free.push_back(i);
+      if (R.cols() > 0)
+        {
+          Eigen::MatrixXd RFt(R.cols(), free.size());
+          for (unsigned int k = 0; k < free.size(); ++k)
+            RFt.col(k) = R.row(free[k]).transpose();
+          Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(RFt);
+          AssertThrow(qr.rank() == R.cols(), dealii::ExcInternalError());
+          for (unsigned int k = 0; k < R.cols(); ++k)
+            supports.push_back(free[qr.colsPermutation().indices()(k)]);
+        }
+
+      // The body's constraints plus u_s = 0 at the supports.
+      constraints.clear();
+      for (const auto &line : body_constraints.get_lines())
+        {
+          constraints.add_line(line.index);
+          constraints.add_entries(line.index, line.entries);
+          constraints.set_inhomogeneity(line.index, line.inhomogeneity);
+        }
+      for (const unsigned int s : supports)
+        constraints.add_line(s);
+      constraints.close();
+
+      try
+        {
+          cholesky.factorize(body.system_matrix(), constraints);
+        }
+      catch (const linear_algebra::NotPositiveDefiniteError &)
+        {
+          throw InputError(body.name() +
+                           ": the stiffness matrix is not positive definite "
+                           "even with fictitious supports of the free rigid "
+                           "motions; check the boundary conditions");
+        }
+
+      // u_o: the rows of the body's right-hand side at the (remaining) free
+      // degrees of freedom already hold M^T (f - K u_bar).
+      const auto     &rhs = body.system_rhs();
+      const auto     &fr  = cholesky.free_dofs();
+      Eigen::MatrixXd b_r(fr.size(), 1);
+      for (unsigned int k = 0; k < fr.size(); ++k)
+        b_r(k, 0) = rhs[fr[k]];
+      u_o = cholesky.extend(cholesky.solve_reduced(b_r), false).col(0);
+
+      // e = -R^T f_r over the free degrees of freedom of the body's own
+      // constraints (the rows of R there are the reduced rigid motions).
+      e = Eigen::VectorXd::Zero(R.cols());
+      for (const unsigned int i : free)
+        e -= rhs[i] * R.row(i).transpose();
+    }
+
+
+
+    // @sect3{Condensation by blocked solves}
+    template <int dim>
+    void
+    Condenser<dim>::condense(const unsigned int columns_per_pass)
+    {
+      Assert(cholesky.is_factorized(), dealii::ExcInternalError());
+      const unsigned int nc = V.cols();
+      A.setZero(nc, nc);
+      for (unsigned int c0 = 0; c0 < nc; c0 += columns_per_pass)
+        {
+          const unsigned int    nb = std::min(columns_per_pass, nc - c0);
+          const Eigen::MatrixXd Vb = Eigen::MatrixXd(V.middleCols(c0, nb));
+          const Eigen::MatrixXd Zb = cholesky.solve(Vb);
+          A.middleCols(c0, nb)     = V.transpose() * Zb;
+        }
+      const double norm  = A.norm();
+      relative_asymmetry = norm > 0 ? (A - A.transpose()).norm() / norm : 0.0;
+      A                  = 0.5 * (A + A.transpose()).eval();
+      s_o                = V.transpose() * u_o;
+      G                  = R.transpose() * V;
+    }
+
+
+
+    template <int dim>
+    dealii::Vector<double>
+    Condenser<dim>::recover(const Eigen::VectorXd &r,
+                            const Eigen::VectorXd &alpha) const
+    {
+      Eigen::VectorXd u = u_o + cholesky.solve(Eigen::VectorXd(V * r));
+      if (R.cols() > 0)
+        u += R * alpha;
+      dealii::Vector<double> result(u.size());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        result[i] = u(i);
+      return result;
+    }
+
+
+
+    template <int dim>
+    Eigen::VectorXd
+    Condenser<dim>::surface_response(const dealii::Vector<double> &u) const
+    {
+      Eigen::VectorXd x(u.size());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        x(i) = u[i];
+      return V.transpose() * x;
+    }
+
+
+
     template class Condenser<2>;
     template class Condenser<3>;
   } // namespace condensation

@@ -1,12 +1,311 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
-#include <dpana/contact_surface/contact_surface.templates.h>
+//
+// The candidate contact surface of one body: its faces, the frames of its
+// contact elements and their quadrature points, and the gap to a rigid
+// plane. The grouping of the faces is in face_grouping.cc, the pairing with
+// a second body in mortar_pairing.cc.
+
+#include <dpana/base/exceptions.h>
+#include <dpana/contact_surface/contact_surface.h>
+#include <dpana/contact_surface/format_point.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
 
 namespace dpana
 {
   namespace contact_surface
   {
+    // @sect3{The tangential frame}
+    //
+    // In 2D tau is n turned by +90 degrees, so that (n, tau) is right-handed:
+    // for the downward normal n = (0, -1) of a base, tau = (1, 0). In 3D tau_1
+    // is the projection of e_x on the tangent plane (of e_y if n is nearly
+    // parallel to e_x) and tau_2 = n x tau_1.
+    template <int dim>
+    std::array<dealii::Tensor<1, dim>, dim - 1>
+    ContactSurface<dim>::tangential_frame(const dealii::Tensor<1, dim> &n)
+    {
+      std::array<dealii::Tensor<1, dim>, dim - 1> tau;
+      if constexpr (dim == 2)
+        {
+          tau[0][0] = -n[1];
+          tau[0][1] = n[0];
+        }
+      else
+        {
+          dealii::Tensor<1, dim> e;
+          e[std::abs(n[0]) > 0.9 ? 1 : 0] = 1.0;
+          tau[0]                          = e - (e * n) * n;
+          tau[0] /= tau[0].norm();
+          tau[1] = dealii::cross_product_3d(n, tau[0]);
+        }
+      return tau;
+    }
+
+
+
+    // @sect3{Candidate faces}
+    //
+    // A face of a P1 simplex mesh is flat: its area, centroid and normal
+    // follow from its vertices. The normal is turned outwards by comparing
+    // with the centre of the cell.
+    namespace
+    {
+      template <int dim>
+      Face<dim>
+      make_face(
+        const typename dealii::Triangulation<dim>::active_cell_iterator &cell,
+        const unsigned int                                               f)
+      {
+        const auto face = cell->face(f);
+        Face<dim>  F;
+        F.cell    = cell;
+        F.face_no = f;
+        for (const unsigned int v : face->vertex_indices())
+          {
+            F.vertices.push_back(face->vertex_index(v));
+            F.points.push_back(face->vertex(v));
+            F.centroid += face->vertex(v);
+          }
+        F.centroid /= static_cast<double>(F.points.size());
+        if constexpr (dim == 2)
+          {
+            const auto t = F.points[1] - F.points[0];
+            F.normal[0]  = t[1];
+            F.normal[1]  = -t[0];
+            F.area       = t.norm();
+          }
+        else
+          {
+            F.normal = dealii::cross_product_3d(F.points[1] - F.points[0],
+                                                F.points[2] - F.points[0]);
+            F.area   = 0.5 * F.normal.norm();
+          }
+        F.normal /= F.normal.norm();
+        if ((F.centroid - cell->center()) * F.normal < 0)
+          F.normal *= -1.0;
+        return F;
+      }
+    } // namespace
+
+
+
+    // The faces of the contact boundary whose centroid lies in the box
+    // |x_d - x0_d| <= w of the candidate region (w <= 0: the whole
+    // boundary). The vertices of the faces left out are kept: an element
+    // that touches one lies at an open edge of the candidate surface.
+    template <int dim>
+    void
+    ContactSurface<dim>::collect_faces(const dealii::Triangulation<dim> &tria,
+                                       const double                      w)
+    {
+      faces.clear();
+      excluded_vertices.clear();
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto face = cell->face(f);
+            if (!face->at_boundary() || face->boundary_id() != opts.boundary_id)
+              continue;
+            const Face<dim> F      = make_face<dim>(cell, f);
+            bool            inside = true;
+            if (w > 0)
+              for (unsigned int d = 0; d < dim; ++d)
+                if (std::abs(F.centroid[d] - opts.region_centre[d]) >
+                    w * (1 + 1e-12))
+                  inside = false;
+            if (inside)
+              faces.push_back(F);
+            else
+              excluded_vertices.insert(F.vertices.begin(), F.vertices.end());
+          }
+      if (faces.empty())
+        throw InputError(opts.body + ": no face of the contact boundary '" +
+                         opts.boundary +
+                         "' lies in the candidate region (parameters "
+                         "Contact / Boundary, Candidate centre, Candidate "
+                         "half width)");
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSurface<dim>::build(const dealii::Triangulation<dim> &tria,
+                               const Options                    &options)
+    {
+      opts = options;
+      collect_faces(tria, opts.region_half_width);
+
+      // The surface normal: the given contact direction, or the
+      // area-weighted mean of the outward normals of the faces.
+      if (opts.direction.norm() > 0)
+        n_surface = opts.direction / opts.direction.norm();
+      else
+        {
+          n_surface = 0;
+          for (const auto &F : faces)
+            n_surface += F.area * F.normal;
+          if (!(n_surface.norm() > 0))
+            throw InputError(opts.body + ": the candidate faces of '" +
+                             opts.boundary +
+                             "' have no mean normal; give the parameter "
+                             "Contact / Contact direction");
+          n_surface /= n_surface.norm();
+        }
+      for (const auto &F : faces)
+        if (F.normal * n_surface <= 1e-3)
+          throw InputError(
+            opts.body + ": the candidate face at " +
+            internal::format_point(F.centroid) + " of '" + opts.boundary +
+            "' faces away from the contact direction; reduce the candidate "
+            "region (parameter Contact / Candidate half width)");
+      tau_surface = tangential_frame(n_surface);
+      group_faces();
+      finish_elements();
+    }
+
+
+
+    // Frame, projected area, quadrature points, centroid and tangential
+    // extents of every element. The frame comes first: the weight of a face
+    // is its area projected on the plane normal to n, |F| (n_F . n).
+    template <int dim>
+    void
+    ContactSurface<dim>::finish_elements()
+    {
+      for (auto &e : elements)
+        {
+          dealii::Tensor<1, dim> n;
+          for (const unsigned int f : e.faces)
+            n += faces[f].area * faces[f].normal;
+          e.normal   = opts.direction.norm() > 0 ? n_surface : n / n.norm();
+          e.tangents = tangential_frame(e.normal);
+
+          e.area     = 0;
+          e.centroid = dealii::Point<dim>();
+          e.points.clear();
+          e.s_min = e.t_min = std::numeric_limits<double>::max();
+          e.s_max = e.t_max = -std::numeric_limits<double>::max();
+          e.at_open_edge    = false;
+          for (const unsigned int f : e.faces)
+            {
+              const auto  &F = faces[f];
+              const double c = F.normal * e.normal;
+              if (!(c > 1e-3))
+                throw InputError(
+                  opts.body + ": the candidate face at " +
+                  internal::format_point(F.centroid) + " of '" + opts.boundary +
+                  "' is nearly parallel to the normal of its contact "
+                  "element; use smaller contact elements (parameter "
+                  "Contact / Faces per contact element) or a smaller candidate "
+                  "region");
+              SurfacePoint<dim> p;
+              p.face = f;
+              p.barycentric.fill(1.0 / dim);
+              p.x      = F.centroid;
+              p.weight = F.area * c;
+              e.points.push_back(p);
+              e.area += p.weight;
+              e.centroid += p.weight * F.centroid;
+              for (const auto &x : F.points)
+                {
+                  e.s_min = std::min(e.s_min, x * tau_surface[0]);
+                  e.s_max = std::max(e.s_max, x * tau_surface[0]);
+                  e.t_min = std::min(e.t_min, x * tau_surface[dim - 2]);
+                  e.t_max = std::max(e.t_max, x * tau_surface[dim - 2]);
+                }
+              for (const unsigned int v : F.vertices)
+                if (excluded_vertices.count(v))
+                  e.at_open_edge = true;
+            }
+          e.centroid /= e.area;
+          e.s = e.centroid * tau_surface[0];
+          e.t = dim == 3 ? e.centroid * tau_surface[dim - 2] : 0.0;
+          if (dim == 2)
+            e.t_min = e.t_max = 0;
+          e.gap_integral = 0;
+        }
+    }
+
+
+
+    // @sect3{The gap to a rigid plane}
+    //
+    // The gap is linear on each face, so the rule of the element (one point
+    // at each face's centroid) integrates it exactly.
+    template <int dim>
+    void
+    ContactSurface<dim>::set_plane_gap(const dealii::Point<dim> &point)
+    {
+      for (auto &e : elements)
+        {
+          e.gap_integral = 0;
+          for (const auto &p : e.points)
+            e.gap_integral += p.weight * ((point - p.x) * e.normal);
+        }
+    }
+
+
+
+    template <int dim>
+    dealii::Point<dim>
+    ContactSurface<dim>::first_contact_point() const
+    {
+      dealii::Point<dim> best = faces[0].points[0];
+      for (const auto &F : faces)
+        for (const auto &x : F.points)
+          if (x * n_surface > best * n_surface)
+            best = x;
+      return best;
+    }
+
+
+
+    template <int dim>
+    std::vector<unsigned int>
+    ContactSurface<dim>::sorted_elements() const
+    {
+      std::vector<unsigned int> order(elements.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(),
+                order.end(),
+                [&](const unsigned int a, const unsigned int b) {
+                  if (std::abs(elements[a].s - elements[b].s) >
+                      1e-10 * (std::abs(elements[a].s) + 1))
+                    return elements[a].s < elements[b].s;
+                  return elements[a].t < elements[b].t;
+                });
+      return order;
+    }
+
+
+
+    template <int dim>
+    std::string
+    ContactSurface<dim>::description() const
+    {
+      std::ostringstream s;
+      double smin = std::numeric_limits<double>::max(), smax = -smin;
+      for (const auto &e : elements)
+        {
+          smin = std::min(smin, e.s_min);
+          smax = std::max(smax, e.s_max);
+        }
+      s << faces.size() << " faces of '" << opts.boundary << "' of "
+        << opts.body << " in " << elements.size() << " contact elements, s in ["
+        << smin << ", " << smax << "]";
+      return s.str();
+    }
+
+
+
     template class ContactSurface<2>;
     template class ContactSurface<3>;
   } // namespace contact_surface

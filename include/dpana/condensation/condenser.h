@@ -23,7 +23,7 @@ namespace dpana
   {
     /**
      * The condensation of one elastic body on its candidate contact surface
-     * (seed 000, eqs. 4.1-4.9).
+     * (the reference formulation, eqs. 4.1-4.9).
      *
      * <h3>The operator V</h3>
      *

@@ -111,9 +111,8 @@ namespace dpana
      *
      * The faces of a named boundary, optionally only those whose centroid x
      * lies in the box |x_d - x0_d| <= w of a candidate region (centre x0,
-     * half width w). The seeds require that the result not depend on Gamma_c
-     * as long as it contains the whole contact zone; the region makes this
-     * checkable.
+     * half width w). The result must not depend on Gamma_c as long as it
+     * contains the whole contact zone; the region makes this checkable.
      *
      * <h3>Contact elements</h3>
      *
@@ -151,6 +150,15 @@ namespace dpana
      * clipped by triangles in 3D). A cylinder meshed along its arc can rest
      * on a foundation meshed on a grid, or in a cavity of another radius;
      * matching meshes are the special case of one partner per face.
+     *
+     * <h3>Where the code is</h3>
+     *
+     * source/contact_surface/contact_surface.cc: candidate faces, frames,
+     * quadrature points and gaps to a plane; face_grouping.cc: the grouping
+     * into contact elements; mortar_pairing.cc: pair() and the projection
+     * of the second body. The entries of the parameter file that fill the
+     * Options are declared and parsed by contact_surface::Parameters
+     * (parameters.h).
      */
     template <int dim>
     class ContactSurface

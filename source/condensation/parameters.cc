@@ -1,0 +1,30 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#include <dpana/condensation/parameters.h>
+
+#include <deal.II/base/patterns.h>
+
+namespace dpana
+{
+  namespace condensation
+  {
+    void
+    Parameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Columns per solve",
+                        "256",
+                        dealii::Patterns::Integer(1),
+                        "Columns of V handed at once to the blocked sparse "
+                        "Cholesky solves of the condensation.");
+    }
+
+
+
+    void
+    Parameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      columns_per_solve = prm.get_integer("Columns per solve");
+    }
+  } // namespace condensation
+} // namespace dpana
