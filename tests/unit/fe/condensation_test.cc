@@ -6,7 +6,8 @@
 // contact runs against exact or independent results.
 
 #include <dpana/body/body.h>
-#include <dpana/scene/contact_scene.h>
+#include <dpana/scene/run.h>
+#include <dpana/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -60,9 +61,9 @@ namespace
            "  set Contact direction = 0, -1\n" +
            contact +
            "\n"
-           "  subsection Output\n"
-           "    set Plot = false\n"
-           "  end\n"
+           "end\n"
+           "subsection Output\n"
+           "  set Plot = false\n"
            "end\n";
   }
 
@@ -82,8 +83,8 @@ namespace
 TEST(Condensation, ComplianceSymmetricPositiveDefinite)
 {
   auto s = make_scene<2>(block_prm("set Fixed = top: x, y", "", ""));
-  s->setup_bodies();
-  s->setup_surfaces();
+  s->assemble();
+  s->build_contact_surface();
   s->condense();
   const auto &A = s->problem().A;
   EXPECT_LT(s->condenser(0).asymmetry(), 1e-12);
@@ -109,8 +110,8 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
 {
   const std::string text = block_prm("set Fixed = top: x, y", "", "");
   auto              s    = make_scene<2>(text);
-  s->setup_bodies();
-  s->setup_surfaces();
+  s->assemble();
+  s->build_contact_surface();
   s->condense();
   const auto &A       = s->problem().A;
   const auto &surface = s->surface(0);
@@ -120,7 +121,7 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
       {
         Body<2>                  body("Body 1");
         dealii::ParameterHandler prm;
-        scene::declare_parameters(prm, 2, 1);
+        scene::declare_parameters(prm, {2, 1, true});
         prm.parse_input_from_string(text);
         prm.enter_subsection("Body 1");
         body.parse_parameters(prm);
@@ -178,7 +179,7 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
 
 
 
-// The frictionless receding block (seed 000, section 4.2.1) has an exact
+// The frictionless receding block (the reference formulation, section 4.2.1) has an exact
 // solution: the uniform stress sigma_xx = -100, sigma_yy = -50, sigma_xy = 0
 // MPa satisfies equilibrium, the loads on the top and lateral faces, the
 // symmetry condition (u_x = 0 on x = 0: the displacement of a uniform stress
@@ -215,7 +216,7 @@ TEST(ContactRun, FrictionlessRecedingBlockIsUniform)
 // N_max = 14681 MPa. Hertz is the limit a << R of a half-space with a
 // parabolic profile; here a / R = 0.22 and the body is a finite disc loaded
 // at its centre line, so the converged FE values need not equal Hertz: the
-// seeds' own table 4.2 differs from Hertz by -8 % (a) and +1.5 % (N_max).
+// reference formulation's own table 4.2 differs from Hertz by -8 % (a) and +1.5 % (N_max).
 // The test asserts: (1) N_max increases monotonically with refinement
 // (the piecewise constant traction resolves the peak better) and converges
 // (the last increment is below 1 % of the value); (2) the finest N_max is
@@ -320,7 +321,7 @@ TEST(ContactRun, CandidateEdgeWarning)
 
 
 
-// The 3D receding block (seed 000, section 4.2.2: quarter model, nu = 0,
+// The 3D receding block (the reference formulation, section 4.2.2: quarter model, nu = 0,
 // mu = 1, free end face) against the 2D plane solution. With nu = 0 the
 // plane solution (u_z = 0, sigma_zz = nu (sigma_xx + sigma_yy) = 0, T_z = 0)
 // satisfies the free end condition, so it is also the exact solution of the

@@ -6,7 +6,7 @@
 // elements, frames, pairing of two bodies.
 
 #include <dpana/base/exceptions.h>
-#include <dpana/scene/contact_scene.h>
+#include <dpana/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -82,8 +82,8 @@ namespace
   // candidate region; some gap must be positive.
   template <int dim>
   void
-  expect_same_gaps(const scene::ContactScene<dim> &one,
-                   const scene::ContactScene<dim> &two,
+  expect_same_gaps(const scene::Scene<dim> &one,
+                   const scene::Scene<dim> &two,
                    const double                    L)
   {
     const auto &rigid = one.surface(0), &paired = two.surface(0);
@@ -113,8 +113,8 @@ namespace
 TEST(ContactSurface, StructuredPatchesOfEightTriangles)
 {
   auto s = make_scene<3>(box_prm("0"));
-  s->setup_bodies();
-  s->setup_surfaces();
+  s->assemble();
+  s->build_contact_surface();
   const auto &surface = s->surface(0);
   ASSERT_EQ(surface.get_faces().size(), 16u);
   ASSERT_EQ(surface.n_elements(), 2u);
@@ -140,8 +140,8 @@ TEST(ContactSurface, StructuredPatchesOfEightTriangles)
 TEST(ContactSurface, GreedyAgglomerationCoversTheSurface)
 {
   auto s = make_scene<3>(box_prm("6"));
-  s->setup_bodies();
-  s->setup_surfaces();
+  s->assemble();
+  s->build_contact_surface();
   const auto                 &surface = s->surface(0);
   const auto                 &faces   = surface.get_faces();
   std::multiset<unsigned int> used;
@@ -221,7 +221,7 @@ namespace
 
 
 // Patch test of the 2D mortar projection. The stacked blocks have the
-// exact solution of the receding block (seed 000, section 4.2.1) in both
+// exact solution of the receding block (the reference formulation, section 4.2.1) in both
 // bodies: the uniform stress sigma_xx = -100, sigma_yy = -50 MPa, with a
 // linear displacement that P1 elements represent exactly, and a uniform
 // contact pressure of 50 MPa. The interface discretisations do not match
@@ -294,8 +294,8 @@ TEST(ContactSurface, ProjectedGapOfArcOnPlane)
                               "end\n";
   auto              one =
     make_scene<2>("set Dimension = 2\nsubsection Body 1\n" + disc + contact, 1);
-  one->setup_bodies();
-  one->setup_surfaces();
+  one->assemble();
+  one->build_contact_surface();
   auto two = make_scene<2>(
     "set Dimension = 2\nset Number of bodies = 2\nsubsection Body 1\n" + disc +
       "subsection Body 2\n"
@@ -310,8 +310,8 @@ TEST(ContactSurface, ProjectedGapOfArcOnPlane)
       "end\n" +
       contact,
     2);
-  two->setup_bodies();
-  two->setup_surfaces();
+  two->assemble();
+  two->build_contact_surface();
   expect_same_gaps(*one, *two, 12);
 }
 
@@ -410,8 +410,8 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
                                "  set Contact direction = 0, -1, 0\n"
                                "end\n";
   auto one = make_scene<3>("set Dimension = 3\n" + cylinder + contact, 1);
-  one->setup_bodies();
-  one->setup_surfaces();
+  one->assemble();
+  one->build_contact_surface();
   auto two =
     make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" + cylinder +
                     "subsection Body 2\n"
@@ -427,8 +427,8 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
                     "end\n" +
                     contact,
                   2);
-  two->setup_bodies();
-  two->setup_surfaces();
+  two->assemble();
+  two->build_contact_surface();
   expect_same_gaps(*one, *two, 12);
 }
 
@@ -453,10 +453,10 @@ TEST(ContactSurface, UncoveredSurfaceIsRefusedIn3D)
                            "  set Contact direction = 0, -1, 0\n"
                            "end\n";
   auto s = make_scene<3>(text, 2);
-  s->setup_bodies();
+  s->assemble();
   try
     {
-      s->setup_surfaces();
+      s->build_contact_surface();
       FAIL() << "an uncovered candidate surface was accepted";
     }
   catch (const InputError &e)

@@ -174,7 +174,7 @@ namespace
 
   // @sect3{The sign convention on a problem with a known solution}
   //
-  // One 2D element, A = diag(2, 4), D = (1, 3), mu = 0.5. By hand (seeds'
+  // One 2D element, A = diag(2, 4), D = (1, 3), mu = 0.5. By hand (the reference formulation's
   // convention): the element is pressed (D_N > 0), so u_N = 2 N + 1 = 0
   // gives N = -1/2; sticking would need T = -D_T/4 = -3/4, beyond the
   // capacity -mu N = 1/4, so it slips with T = -1/4 (opposite to D_T) and

@@ -8,7 +8,7 @@
 // the run must say that it did not; on these cases all of them converge,
 // and they must agree with each other.
 
-#include <dpana/scene/contact_scene.h>
+#include <dpana/scene/scene.h>
 
 #include <Eigen/Core>
 
@@ -47,7 +47,7 @@ namespace
            "end\n";
   }
 
-  // The receding block of seed 000, section 4.2.1 (16 x 16 cells, rigid
+  // The receding block of the reference formulation, section 4.2.1 (16 x 16 cells, rigid
   // foundation) with Poisson's ratio nu.
   std::string
   block_prm(const double nu, const double mu, const std::string &solver)

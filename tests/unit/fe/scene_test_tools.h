@@ -1,9 +1,10 @@
-// Shared by the unit tests of the contact scene driver: a ContactScene built
+// Shared by the unit tests of the scene driver: a contact Scene built
 // from the text of a parameter file, quiet.
 #ifndef dpana_tests_scene_test_tools_h
 #define dpana_tests_scene_test_tools_h
 
-#include <dpana/scene/contact_scene.h>
+#include <dpana/scene/run.h>
+#include <dpana/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -16,20 +17,20 @@ namespace dpana
   namespace test
   {
     template <int dim>
-    std::unique_ptr<scene::ContactScene<dim>>
+    std::unique_ptr<scene::Scene<dim>>
     make_scene(const std::string &text, const unsigned int n_bodies = 1)
     {
       dealii::ParameterHandler prm;
-      scene::declare_parameters(prm, dim, n_bodies);
+      scene::declare_parameters(prm, {dim, n_bodies, true});
       prm.parse_input_from_string(text);
-      auto s = std::make_unique<scene::ContactScene<dim>>();
-      s->parse_parameters(prm, n_bodies);
+      auto s = std::make_unique<scene::Scene<dim>>();
+      s->parse_parameters(prm, n_bodies, true);
       s->set_quiet(true);
       return s;
     }
 
     /**
-     * Body 1 of the 2D receding scene (seed 000, section 4.2.1): the half
+     * Body 1 of the 2D receding scene (the reference formulation, section 4.2.1): the half
      * model [0, 40] x [0, 40] with @p nx x @p ny cells, symmetric on x = 0,
      * 50 MPa on the top and 100 MPa on the right side. @p material holds
      * entries of its Material subsection ("set Poisson's ratio = 0\n").
@@ -67,7 +68,7 @@ namespace dpana
      */
     template <int dim>
     double
-    contact_element_size(const scene::ContactScene<dim> &s)
+    contact_element_size(const scene::Scene<dim> &s)
     {
       double size = 0;
       for (const auto &e : s.surface(0).get_elements())
@@ -77,7 +78,7 @@ namespace dpana
     }
 
     /**
-     * The Hertz cylinder of seed 000, section 4.3, as a half model: the
+     * The Hertz cylinder of the reference formulation, section 4.3, as a half model: the
      * quarter disc R = 40 centred at (0, 40), 2 global refinements and @p m
      * contact refinements within 14 mm of the lowest point, loaded by
      * 100 kN/mm at the top of its axis; candidate surface the arc within
