@@ -38,8 +38,8 @@ def reference_text(refs):
             errors.append("Hertz: a %+.1f %%, N_max %+.1f %%"
                           % (100 * v["a_error"], 100 * v["N_max_error"]))
         elif v["type"] == "seed table":
-            texts.append("seed a = %.4g, N_max = %.5g" % (v["a"], v["N_max"]))
-            errors.append("seed: a %+.1f %%, N_max %+.1f %%"
+            texts.append("reference table a = %.4g, N_max = %.5g" % (v["a"], v["N_max"]))
+            errors.append("reference table: a %+.1f %%, N_max %+.1f %%"
                           % (100 * v["a_difference"], 100 * v["N_max_difference"]))
         elif v["type"] == "table":
             texts.append("2D run %s" % os.path.basename(os.path.dirname(v["file"])))
