@@ -37,11 +37,11 @@ def reference_text(refs):
             texts.append("Hertz a = %.4g, N_max = %.5g" % (v["a"], v["N_max"]))
             errors.append("Hertz: a %+.1f %%, N_max %+.1f %%"
                           % (100 * v["a_error"], 100 * v["N_max_error"]))
-        elif v["type"] == "seed table":
+        elif v["type"] == "published table":
             texts.append("reference table a = %.4g, N_max = %.5g" % (v["a"], v["N_max"]))
             errors.append("reference table: a %+.1f %%, N_max %+.1f %%"
                           % (100 * v["a_difference"], 100 * v["N_max_difference"]))
-        elif v["type"] == "table":
+        elif v["type"] == "comparison file":
             texts.append("2D run %s" % os.path.basename(os.path.dirname(v["file"])))
             errors.append("max |ΔN|/N_max %.1e, max |ΔT|/N_max %.1e"
                           % (v["max_N_difference"], v["max_T_difference"]))
@@ -65,7 +65,8 @@ def cell(text):
 def main():
     out = sys.argv[1]
     scenes = sys.argv[2:]
-    phases = ["assembly", "factorization", "condensation", "contact solve", "recovery", "output"]
+    phases = ["assembly", "contact surface", "factorization", "condensation", "contact solve",
+              "recovery", "output"]
     rows = []
     for s in scenes:
         path = os.path.join(out, "runs", "output", s, "summary.json")
@@ -74,7 +75,12 @@ def main():
             continue
         with open(path) as f:
             summary = json.load(f)
-        rows.append((s, summary))
+        # The contact answer, with the sizes of the bodies and the timings
+        # of the whole run.
+        m = dict(summary["contact"])
+        m["dofs"] = [b["dofs"] for b in summary["bodies"]]
+        m["timings"] = summary["timings"]
+        rows.append((s, m))
 
     with open(os.path.join(out, "scenes.md"), "w") as md:
         md.write(

@@ -5,6 +5,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -53,6 +54,8 @@ namespace dpana
     , timer_scope(log.timer, phase)
     , start(std::chrono::steady_clock::now())
   {
+    if (std::find(log.order.begin(), log.order.end(), phase) == log.order.end())
+      log.order.push_back(phase);
     if (log.out)
       *log.out << "[dpana] " << (what.empty() ? phase : what) << " ... "
                << std::flush;
@@ -95,13 +98,14 @@ namespace dpana
   void
   PhaseLog::print(std::ostream &o) const
   {
+    const auto t = timings();
     o << "Timings (s):";
-    for (const auto &[name, s] : timings())
-      o << " " << name << " " << s << ";";
+    for (const auto &name : order)
+      o << " " << name << " " << t.at(name) << ";";
     o << " peak memory (MB):";
-    for (const auto &[name, m] : memory)
-      o << " " << name << " " << std::fixed << std::setprecision(0) << m
-        << ";";
+    for (const auto &name : order)
+      o << " " << name << " " << std::fixed << std::setprecision(0)
+        << memory.at(name) << ";";
     o << std::defaultfloat << std::setprecision(6) << std::endl;
   }
 } // namespace dpana

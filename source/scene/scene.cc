@@ -167,7 +167,22 @@ namespace dpana
     Scene<dim>::build_contact_surface()
     {
       Assert(with_contact, dealii::ExcMessage("A run without contact."));
-      const auto phase = phase_log.phase("contact surface");
+      {
+        const auto phase = phase_log.phase("contact surface");
+        make_surfaces();
+      }
+      if (!quiet)
+        for (const auto &s : surfaces)
+          std::cout << "        Candidate contact surface: " << s->description()
+                    << std::endl;
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::make_surfaces()
+    {
       surfaces.clear();
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
@@ -194,10 +209,6 @@ namespace dpana
               surface_parameters.obstacle_point :
               surfaces[0]->first_contact_point());
         }
-      if (!quiet)
-        for (const auto &s : surfaces)
-          std::cout << "        Candidate contact surface: " << s->description()
-                    << std::endl;
     }
 
 

@@ -14,7 +14,8 @@
 # - otherwise: dpana must succeed, and every file under NAME.expected/ must
 #   match the file of the same relative path under WORKDIR, compared with
 #   numdiff at relative tolerance 1e-6 and absolute tolerance 1e-9 (numbers
-#   are split at whitespace and at the JSON punctuation , [ ] { } : ").
+#   are split at whitespace and at the JSON punctuation , [ ] { } : "); a
+#   JSON file is compared without its "timings" and "peak_memory_mb".
 #
 # See tests/prm/README.md.
 set -u
@@ -78,6 +79,18 @@ if [ ! -d "$srcdir/$name.expected" ]; then
   echo "FAIL: neither $name.error nor $name.expected/ exists"
   exit 1
 fi
+# A JSON file is compared without its "timings" and "peak_memory_mb", which
+# change from run to run: both sides are rewritten without them, with sorted
+# keys, one value per line.
+without_timings() {
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+for k in ("timings", "peak_memory_mb"):
+    d.pop(k, None)
+print(json.dumps(d, indent=1, sort_keys=True))' "$1" > "$2"
+}
+
 failed=0
 while IFS= read -r -d '' reference; do
   relative=${reference#"$srcdir/$name.expected/"}
@@ -86,12 +99,20 @@ while IFS= read -r -d '' reference; do
     failed=1
     continue
   fi
-  if numdiff -q -r 1e-6 -a 1e-9 -s ' \t\n,[]{}:"' "$reference" "$relative" \
-      > /dev/null; then
+  expected_file=$reference
+  written_file=$relative
+  if [ "${relative##*.}" = json ]; then
+    expected_file=$(mktemp) written_file=$(mktemp)
+    without_timings "$reference" "$expected_file"
+    without_timings "$relative" "$written_file"
+  fi
+  if numdiff -q -r 1e-6 -a 1e-9 -s ' \t\n,[]{}:"' "$expected_file" \
+      "$written_file" > /dev/null; then
     echo "OK: $relative"
   else
     echo "FAIL: $relative differs from the reference:"
-    numdiff -r 1e-6 -a 1e-9 -s ' \t\n,[]{}:"' "$reference" "$relative" | head -40
+    numdiff -r 1e-6 -a 1e-9 -s ' \t\n,[]{}:"' "$expected_file" "$written_file" |
+      head -40
     failed=1
   fi
 done < <(find "$srcdir/$name.expected" -type f -print0 | sort -z)

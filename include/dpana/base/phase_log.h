@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dpana
 {
@@ -90,6 +91,7 @@ namespace dpana
     std::ostream                  *out;
     dealii::TimerOutput            timer;
     std::map<std::string, double>  memory;
+    std::vector<std::string>       order; // of the phases' first scopes
   };
 
   /**

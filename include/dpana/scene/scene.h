@@ -202,6 +202,8 @@ namespace dpana
       ContactSummary          summary_;
 
       void
+      make_surfaces();
+      void
       write_contact_output(const std::string &directory);
       void
       write_summary(const std::string &directory) const;
