@@ -3,12 +3,12 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/phase_log.h>
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+
+#include <sys/resource.h>
 
 namespace dpana
 {

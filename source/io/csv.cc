@@ -32,8 +32,8 @@ namespace dpana
     {
       return parameters::parse_double(rows[i][c],
                                       what + ": line " +
-                                        std::to_string(line_numbers[i]) + ", column '" +
-                                        header[c] + "'");
+                                        std::to_string(line_numbers[i]) +
+                                        ", column '" + header[c] + "'");
     }
 
 

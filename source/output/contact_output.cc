@@ -4,18 +4,22 @@
 #include <dpana/output/contact_output.h>
 
 #include <deal.II/dofs/dof_handler.h>
+
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_fe.h>
+
 #include <deal.II/grid/tria.h>
+
 #include <deal.II/lac/vector.h>
+
 #include <deal.II/numerics/data_out.h>
 
 #include <cstdlib>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 
 namespace dpana
@@ -66,7 +70,7 @@ namespace dpana
       make_face_mesh(const contact_surface::ContactSurface<dim> &surface,
                      dealii::Triangulation<dim - 1, dim>        &tria)
       {
-        std::vector<dealii::Point<dim>>          vertices;
+        std::vector<dealii::Point<dim>>        vertices;
         std::vector<dealii::CellData<dim - 1>> cells;
         for (const auto &face : surface.get_faces())
           {
@@ -106,17 +110,19 @@ namespace dpana
       const scene::ContactSummary                &summary,
       const std::string                          &filename)
     {
-      using DCI = dealii::DataComponentInterpretation::DataComponentInterpretation;
+      using DCI =
+        dealii::DataComponentInterpretation::DataComponentInterpretation;
       const auto &res = summary.result;
 
       // The fields, one value (or one vector) per contact element.
       std::vector<std::string>                         names;
       std::vector<DCI>                                 kinds;
       std::vector<std::function<double(unsigned int)>> value;
-      const auto scalar = [&](const std::string                    &name,
+      const auto scalar = [&](const std::string                  &name,
                               std::function<double(unsigned int)> f) {
         names.push_back(name);
-        kinds.push_back(dealii::DataComponentInterpretation::component_is_scalar);
+        kinds.push_back(
+          dealii::DataComponentInterpretation::component_is_scalar);
         value.push_back(std::move(f));
       };
       const auto suffix = [](const unsigned int k) {
@@ -125,7 +131,8 @@ namespace dpana
       scalar("element", [](unsigned int j) { return j; });
       scalar("N", [&](unsigned int j) { return res.r(dim * j); });
       for (unsigned int k = 1; k < dim; ++k)
-        scalar("T" + suffix(k), [&, k](unsigned int j) { return res.r(dim * j + k); });
+        scalar("T" + suffix(k),
+               [&, k](unsigned int j) { return res.r(dim * j + k); });
       scalar("u_N", [&](unsigned int j) {
         return res.u(dim * j) / surface.element(j).area;
       });
@@ -133,7 +140,8 @@ namespace dpana
         scalar("u_T" + suffix(k), [&, k](unsigned int j) {
           return res.u(dim * j + k) / surface.element(j).area;
         });
-      scalar("gap", [&](unsigned int j) { return surface.element(j).mean_gap(); });
+      scalar("gap",
+             [&](unsigned int j) { return surface.element(j).mean_gap(); });
       scalar("status",
              [&](unsigned int j) { return static_cast<int>(res.status[j]); });
       scalar("residual",
@@ -164,7 +172,7 @@ namespace dpana
                                               names.size());
       dealii::DoFHandler<dim - 1, dim>     dof_handler(tria);
       dof_handler.distribute_dofs(fe);
-      dealii::Vector<double>               data(dof_handler.n_dofs());
+      dealii::Vector<double>                       data(dof_handler.n_dofs());
       std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
@@ -202,8 +210,8 @@ namespace dpana
       if (std::system(
             (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) != 0)
         return "no plot: " + python + " has no matplotlib";
-      if (std::system((python + " " + script + " " + csv + " " + png).c_str()) !=
-          0)
+      if (std::system(
+            (python + " " + script + " " + csv + " " + png).c_str()) != 0)
         return "the plot script failed";
       return "";
     }

@@ -28,16 +28,16 @@ namespace dpana
     {
       const auto    &vm = body.cell_von_mises();
       nlohmann::json j  = {
-        {"name", body.name()},
-        {"material", body.material().description(dim)},
-        {"cells", body.triangulation().n_active_cells()},
-        {"vertices", body.triangulation().n_used_vertices()},
-        {"dofs", body.dof_handler().n_dofs()},
-        {"constrained_dofs", body.constraints().n_constraints()},
-        {"max_displacement", body.max_displacement()},
-        {"max_von_mises",
+         {"name", body.name()},
+         {"material", body.material().description(dim)},
+         {"cells", body.triangulation().n_active_cells()},
+         {"vertices", body.triangulation().n_used_vertices()},
+         {"dofs", body.dof_handler().n_dofs()},
+         {"constrained_dofs", body.constraints().n_constraints()},
+         {"max_displacement", body.max_displacement()},
+         {"max_von_mises",
          vm.empty() ? 0.0 : *std::max_element(vm.begin(), vm.end())},
-        {"applied_load_resultant", to_vector(body.applied_load_resultant())}};
+         {"applied_load_resultant", to_vector(body.applied_load_resultant())}};
       j["reactions"] = nlohmann::json::object();
       for (const auto &[name, R] : body.reactions())
         j["reactions"][name] = to_vector(R);
@@ -57,26 +57,26 @@ namespace dpana
     {
       const auto    &res = summary.result;
       nlohmann::json j   = {
-        {"contact_elements", summary.n_elements},
-        {"converged", res.converged},
-        {"iterations", res.iterations},
-        {"residual", res.residual},
-        {"residual_figures",
-         {{"natural_map", res.figures.natural_map},
-          {"penetration", res.figures.penetration},
-          {"cone_violation", res.figures.cone_violation},
-          {"complementarity", res.figures.complementarity},
-          {"equilibrium", res.figures.equilibrium}}},
-        {"message", res.message},
-        {"asymmetry_of_A", summary.asymmetry},
-        {"contact_half_width", summary.half_width},
-        {"contact_half_width_element", summary.half_width_element},
-        {"contact_half_width_centroid", summary.half_width_centroid},
-        {"max_normal_traction", summary.max_pressure},
-        {"normal_resultant", summary.normal_resultant},
-        {"candidate_edge_warning", summary.candidate_edge_warning},
-        {"rigid_displacements",
-         std::vector<double>(res.alpha.begin(), res.alpha.end())}};
+          {"contact_elements", summary.n_elements},
+          {"converged", res.converged},
+          {"iterations", res.iterations},
+          {"residual", res.residual},
+          {"residual_figures",
+           {{"natural_map", res.figures.natural_map},
+            {"penetration", res.figures.penetration},
+            {"cone_violation", res.figures.cone_violation},
+            {"complementarity", res.figures.complementarity},
+            {"equilibrium", res.figures.equilibrium}}},
+          {"message", res.message},
+          {"asymmetry_of_A", summary.asymmetry},
+          {"contact_half_width", summary.half_width},
+          {"contact_half_width_element", summary.half_width_element},
+          {"contact_half_width_centroid", summary.half_width_centroid},
+          {"max_normal_traction", summary.max_pressure},
+          {"normal_resultant", summary.normal_resultant},
+          {"candidate_edge_warning", summary.candidate_edge_warning},
+          {"rigid_displacements",
+           std::vector<double>(res.alpha.begin(), res.alpha.end())}};
       j["zones"] = nlohmann::json::array();
       for (const auto &z : summary.zones)
         {

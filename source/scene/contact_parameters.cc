@@ -40,8 +40,9 @@ namespace dpana
       if (dim == 2)
         cone = contact::ConeModel::interval;
       else
-        cone = prm.get("Cone model") == "polygon" ? contact::ConeModel::polygon :
-                                                    contact::ConeModel::disc;
+        cone = prm.get("Cone model") == "polygon" ?
+                 contact::ConeModel::polygon :
+                 contact::ConeModel::disc;
       polygon_sides = prm.get_integer("Polygon sides");
     }
 
@@ -51,10 +52,11 @@ namespace dpana
     SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry("Solver",
-                        "splitting_active_set",
-                        Selection("splitting_active_set|splitting_pgs|nsgs|alart_curnier"),
-                        "Contact solver (doc/contact_solvers.md).");
+      prm.declare_entry(
+        "Solver",
+        "splitting_active_set",
+        Selection("splitting_active_set|splitting_pgs|nsgs|alart_curnier"),
+        "Contact solver (doc/contact_solvers.md).");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Double(0.),
@@ -79,8 +81,8 @@ namespace dpana
     void
     SolverParameters::parse_parameters(const dealii::ParameterHandler &prm)
     {
-      options.type           = contact::solver_type_from_string(prm.get("Solver"));
-      options.tolerance      = prm.get_double("Tolerance");
+      options.type      = contact::solver_type_from_string(prm.get("Solver"));
+      options.tolerance = prm.get_double("Tolerance");
       options.max_iterations = prm.get_integer("Maximum iterations");
       allow_non_converged    = prm.get_bool("Allow non-converged");
       if (options.tolerance <= 0)

@@ -190,8 +190,9 @@ namespace dpana
 
     template <int dim>
     std::vector<Comparison>
-    References<dim>::hertz(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
-                           const ContactSummary &summary) const
+    References<dim>::hertz(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const ContactSummary                          &summary) const
     {
       const auto k = [](const Material &m) {
         const double nu2 =
@@ -234,12 +235,13 @@ namespace dpana
             << " MPa; relative differences: a " << std::showpos
             << relative(a, table_half_width) << ", N_max "
             << relative(N, table_max_pressure);
-          c.push_back({"published table",
-                       t.str(),
-                       {{"a", table_half_width},
-                        {"N_max", table_max_pressure},
-                        {"a_difference", relative(a, table_half_width)},
-                        {"N_max_difference", relative(N, table_max_pressure)}}});
+          c.push_back(
+            {"published table",
+             t.str(),
+             {{"a", table_half_width},
+              {"N_max", table_max_pressure},
+              {"a_difference", relative(a, table_half_width)},
+              {"N_max_difference", relative(N, table_max_pressure)}}});
         }
       return c;
     }
@@ -261,7 +263,7 @@ namespace dpana
           return ref.front()[c];
         if (s >= ref.back()[0])
           return ref.back()[c];
-        auto it = std::lower_bound(ref.begin(),
+        auto        it = std::lower_bound(ref.begin(),
                                    ref.end(),
                                    std::array<double, 3>{{s, -1e300, -1e300}});
         const auto &b = *it, &a = *(it - 1);

@@ -38,10 +38,10 @@ namespace dpana
     void
     print_parameters(const std::string &prm_file, std::ostream &out)
     {
-      const parameters::FileOutline outline =
-        prm_file.empty() ? parameters::FileOutline() :
-                           parameters::scan_file(prm_file);
-      dealii::ParameterHandler prm;
+      const parameters::FileOutline outline = prm_file.empty() ?
+                                                parameters::FileOutline() :
+                                                parameters::scan_file(prm_file);
+      dealii::ParameterHandler      prm;
       declare_parameters(prm, outline);
       if (!prm_file.empty())
         parameters::parse_file(prm, prm_file);
@@ -59,8 +59,7 @@ namespace dpana
     {
       template <int dim>
       int
-      run(const std::string             &prm_file,
-          const parameters::FileOutline &outline)
+      run(const std::string &prm_file, const parameters::FileOutline &outline)
       {
         dealii::ParameterHandler prm;
         declare_parameters(prm, outline);

@@ -23,7 +23,8 @@ namespace dpana
     template <int dim>
     Scene<dim>::Scene()
       : phase_log(&std::cout)
-    {}
+    {
+    }
 
     template <int dim>
     Scene<dim>::~Scene() = default;
@@ -204,10 +205,9 @@ namespace dpana
           // The rigid obstacle: the plane through the obstacle point (by
           // default the first contact point of the candidate surface) normal
           // to the contact direction.
-          surfaces[0]->set_plane_gap(
-            surface_parameters.obstacle_point_given ?
-              surface_parameters.obstacle_point :
-              surfaces[0]->first_contact_point());
+          surfaces[0]->set_plane_gap(surface_parameters.obstacle_point_given ?
+                                       surface_parameters.obstacle_point :
+                                       surfaces[0]->first_contact_point());
         }
     }
 
@@ -267,19 +267,19 @@ namespace dpana
         {
           for (auto &body : bodies)
             {
-              const auto phase = phase_log.phase(
-                "solve",
-                "factorising and solving " + body->name() +
-                  " (sparse Cholesky)");
+              const auto phase =
+                phase_log.phase("solve",
+                                "factorising and solving " + body->name() +
+                                  " (sparse Cholesky)");
               body->solve();
             }
           return;
         }
       {
-        const auto phase = phase_log.phase(
-          "contact solve",
-          "solving the contact problem (" +
-            contact::to_string(solver.options.type) + ")");
+        const auto phase =
+          phase_log.phase("contact solve",
+                          "solving the contact problem (" +
+                            contact::to_string(solver.options.type) + ")");
         try
           {
             summary_.result = contact::solve(problem_, solver.options);
@@ -319,8 +319,9 @@ namespace dpana
       unsigned int offset = 0;
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const unsigned int    mb    = condensers[b]->n_free_modes();
-          const Eigen::VectorXd alpha = summary_.result.alpha.segment(offset, mb);
+          const unsigned int    mb = condensers[b]->n_free_modes();
+          const Eigen::VectorXd alpha =
+            summary_.result.alpha.segment(offset, mb);
           offset += mb;
           bodies[b]->set_solution(
             condensers[b]->recover(summary_.result.r, alpha));
@@ -330,8 +331,7 @@ namespace dpana
                 problem_,
                 surface_parameters.region_centre,
                 summary_);
-      summary_.comparisons =
-        references.compare(bodies, *surfaces[0], summary_);
+      summary_.comparisons = references.compare(bodies, *surfaces[0], summary_);
     }
 
 
@@ -352,8 +352,9 @@ namespace dpana
       try
         {
           {
-            const auto phase = phase_log.phase(
-              "output", "writing output to " + directory.string());
+            const auto phase =
+              phase_log.phase("output",
+                              "writing output to " + directory.string());
             fs::create_directories(directory);
             std::ofstream(directory / "parameters.prm") << parameters_prm;
             std::ofstream(directory / "parameters.json") << parameters_json;
@@ -470,8 +471,8 @@ namespace dpana
         {
           std::cout << "        " << body->name()
                     << ": max |u| = " << body->max_displacement()
-                    << " mm; load resultant ("
-                    << body->applied_load_resultant() << ")";
+                    << " mm; load resultant (" << body->applied_load_resultant()
+                    << ")";
           for (const auto &[name, R] : body->reactions())
             std::cout << "; reaction " << name << " (" << R << ")";
           std::cout << std::endl;

@@ -88,10 +88,10 @@ namespace dpana
     print(std::ostream &out) const;
 
   private:
-    std::ostream                  *out;
-    dealii::TimerOutput            timer;
-    std::map<std::string, double>  memory;
-    std::vector<std::string>       order; // of the phases' first scopes
+    std::ostream                 *out;
+    dealii::TimerOutput           timer;
+    std::map<std::string, double> memory;
+    std::vector<std::string>      order; // of the phases' first scopes
   };
 
   /**

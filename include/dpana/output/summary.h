@@ -8,9 +8,9 @@
 #include <dpana/body/body.h>
 #include <dpana/scene/contact_summary.h>
 
-#include <nlohmann/json.hpp>
-
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace dpana
 {

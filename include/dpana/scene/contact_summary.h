@@ -62,13 +62,13 @@ namespace dpana
       double half_width_centroid = 0;
       // Tangential size of the element that ends the contact zone: with
       // piecewise constant tractions, a is known to this size.
-      double              half_width_element     = 0;
-      double              max_pressure           = 0; // max(-N)
-      double              normal_resultant       = 0; // sum(-N area)
-      bool                candidate_edge_warning = false;
-      double              asymmetry              = 0; // of A, before symmetrising
-      std::vector<Zone>   zones;
-      std::vector<double> element_residual; // ||F_j||, MPa
+      double                  half_width_element     = 0;
+      double                  max_pressure           = 0; // max(-N)
+      double                  normal_resultant       = 0; // sum(-N area)
+      bool                    candidate_edge_warning = false;
+      double                  asymmetry = 0; // of A, before symmetrising
+      std::vector<Zone>       zones;
+      std::vector<double>     element_residual; // ||F_j||, MPa
       std::vector<Comparison> comparisons;
     };
 

@@ -179,15 +179,15 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
 
 
 
-// The frictionless receding block (the reference formulation, section 4.2.1) has an exact
-// solution: the uniform stress sigma_xx = -100, sigma_yy = -50, sigma_xy = 0
-// MPa satisfies equilibrium, the loads on the top and lateral faces, the
-// symmetry condition (u_x = 0 on x = 0: the displacement of a uniform stress
-// state is linear, u_x proportional to x) and, on the base, frictionless
-// contact with a uniform vertical displacement (the free rigid translation
-// of the floating block). Its displacement is linear, so P1 elements
-// reproduce it exactly: every contact element must carry N = -50 MPa and
-// T = 0, up to round-off, on any mesh.
+// The frictionless receding block (the reference formulation, section 4.2.1)
+// has an exact solution: the uniform stress sigma_xx = -100, sigma_yy = -50,
+// sigma_xy = 0 MPa satisfies equilibrium, the loads on the top and lateral
+// faces, the symmetry condition (u_x = 0 on x = 0: the displacement of a
+// uniform stress state is linear, u_x proportional to x) and, on the base,
+// frictionless contact with a uniform vertical displacement (the free rigid
+// translation of the floating block). Its displacement is linear, so P1
+// elements reproduce it exactly: every contact element must carry N = -50 MPa
+// and T = 0, up to round-off, on any mesh.
 TEST(ContactRun, FrictionlessRecedingBlockIsUniform)
 {
   auto s = make_scene<2>(block_prm("set Symmetry = left",
@@ -216,13 +216,13 @@ TEST(ContactRun, FrictionlessRecedingBlockIsUniform)
 // N_max = 14681 MPa. Hertz is the limit a << R of a half-space with a
 // parabolic profile; here a / R = 0.22 and the body is a finite disc loaded
 // at its centre line, so the converged FE values need not equal Hertz: the
-// reference formulation's own table 4.2 differs from Hertz by -8 % (a) and +1.5 % (N_max).
-// The test asserts: (1) N_max increases monotonically with refinement
-// (the piecewise constant traction resolves the peak better) and converges
-// (the last increment is below 1 % of the value); (2) the finest N_max is
-// within +-6 % of Hertz and a within +-10 %; (3) a of every mesh agrees
-// with the finest one within one contact element size (a is only known to
-// the size of the element that ends the contact zone).
+// reference formulation's own table 4.2 differs from Hertz by -8 % (a) and +1.5
+// % (N_max). The test asserts: (1) N_max increases monotonically with
+// refinement (the piecewise constant traction resolves the peak better) and
+// converges (the last increment is below 1 % of the value); (2) the finest
+// N_max is within +-6 % of Hertz and a within +-10 %; (3) a of every mesh
+// agrees with the finest one within one contact element size (a is only known
+// to the size of the element that ends the contact zone).
 TEST(ContactRun, HertzRigidFoundationConvergence)
 {
   const double P = 200000, R = 40, E = 130000, nu = 0.2;
@@ -321,11 +321,11 @@ TEST(ContactRun, CandidateEdgeWarning)
 
 
 
-// The 3D receding block (the reference formulation, section 4.2.2: quarter model, nu = 0,
-// mu = 1, free end face) against the 2D plane solution. With nu = 0 the
-// plane solution (u_z = 0, sigma_zz = nu (sigma_xx + sigma_yy) = 0, T_z = 0)
-// satisfies the free end condition, so it is also the exact solution of the
-// 3D problem and the tractions must agree up to the discretisation: the
+// The 3D receding block (the reference formulation, section 4.2.2: quarter
+// model, nu = 0, mu = 1, free end face) against the 2D plane solution. With nu
+// = 0 the plane solution (u_z = 0, sigma_zz = nu (sigma_xx + sigma_yy) = 0, T_z
+// = 0) satisfies the free end condition, so it is also the exact solution of
+// the 3D problem and the tractions must agree up to the discretisation: the
 // tetrahedra of the 3D mesh are not the prisms over the 2D triangles. The
 // tolerance, 5 % of the maximum normal traction, was chosen from the
 // difference of the two discretisations at this mesh size (2.5 % measured

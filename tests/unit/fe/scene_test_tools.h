@@ -30,7 +30,8 @@ namespace dpana
     }
 
     /**
-     * Body 1 of the 2D receding scene (the reference formulation, section 4.2.1): the half
+     * Body 1 of the 2D receding scene (the reference formulation,
+     * section 4.2.1): the half
      * model [0, 40] x [0, 40] with @p nx x @p ny cells, symmetric on x = 0,
      * 50 MPa on the top and 100 MPa on the right side. @p material holds
      * entries of its Material subsection ("set Poisson's ratio = 0\n").
@@ -78,7 +79,8 @@ namespace dpana
     }
 
     /**
-     * The Hertz cylinder of the reference formulation, section 4.3, as a half model: the
+     * The Hertz cylinder of the reference formulation, section 4.3, as a half
+     * model: the
      * quarter disc R = 40 centred at (0, 40), 2 global refinements and @p m
      * contact refinements within 14 mm of the lowest point, loaded by
      * 100 kN/mm at the top of its axis; candidate surface the arc within

@@ -1,0 +1,158 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+//
+// The one driver of every run, dpana::scene::Scene: a run without contact
+// is the same run with the contact phases left out; every phase is timed
+// and its peak memory noted; the output of every run has one summary
+// schema.
+
+#include <dpana/scene/run.h>
+#include <dpana/scene/scene.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "scene_test_tools.h"
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace
+{
+  using dpana::test::make_scene;
+  using dpana::test::receding_block;
+
+  std::set<std::string>
+  phase_names(const dpana::PhaseLog &log)
+  {
+    std::set<std::string> names;
+    for (const auto &[name, t] : log.timings())
+      {
+        names.insert(name);
+        EXPECT_GE(t, 0.0) << name;
+        EXPECT_GT(log.peak_memory().at(name), 0.0) << name;
+      }
+    return names;
+  }
+
+  // The receding block of the reference formulation on a frictionless rigid
+  // foundation: the exact tractions are N = -50 MPa, T = 0 everywhere.
+  std::string
+  receding_contact(const std::string &output)
+  {
+    return "set Dimension = 2\n" + receding_block(8, 8, "") +
+           "subsection Contact\n"
+           "  set Boundary 1 = bottom\n"
+           "  set Contact direction = 0, -1\n"
+           "end\n"
+           "subsection Output\n"
+           "  set Directory = " +
+           output +
+           "\n"
+           "  set Plot = false\n"
+           "end\n";
+  }
+} // namespace
+
+
+
+// The block held by symmetry planes x = 0 and y = 0 under 100 MPa on its
+// right side and 50 MPa on its top is in a uniform state (doc of
+// tests/prm/uniform_stress_2d.prm): in plane strain with E = 130000 MPa,
+// nu = 0.2 the corner (40, 40) moves by 40 |(eps_xx, eps_yy)| =
+// 0.02688040575 mm, which P1 elements reproduce exactly.
+TEST(Scene, ElasticRunIsTheRunWithoutContact)
+{
+  std::string       text = "set Dimension = 2\n" + receding_block(4, 4, "");
+  const std::string left = "set Symmetry = left\n";
+  text.replace(text.find(left), left.size(), "set Symmetry = left, bottom\n");
+
+  dealii::ParameterHandler prm;
+  dpana::scene::declare_parameters(prm, {2, 1, false});
+  prm.parse_input_from_string(text);
+  dpana::scene::Scene<2> scene;
+  scene.parse_parameters(prm, 1, false);
+  scene.set_quiet(true);
+  scene.run(false);
+
+  EXPECT_FALSE(scene.has_contact());
+  EXPECT_NEAR(scene.body(0).max_displacement(), 0.02688040575, 1e-10);
+  EXPECT_EQ(phase_names(scene.phases()),
+            (std::set<std::string>{"assembly", "solve", "recovery"}));
+}
+
+
+
+// The contact phases, each called alone, and the exact uniform answer.
+TEST(Scene, ContactPhasesOneByOne)
+{
+  auto s = make_scene<2>(receding_contact("unused"));
+  s->assemble();
+  EXPECT_EQ(phase_names(s->phases()), (std::set<std::string>{"assembly"}));
+  s->build_contact_surface();
+  s->condense();
+  s->solve();
+  s->recover();
+  EXPECT_EQ(phase_names(s->phases()),
+            (std::set<std::string>{"assembly",
+                                   "contact surface",
+                                   "factorization",
+                                   "condensation",
+                                   "contact solve",
+                                   "recovery"}));
+  ASSERT_TRUE(s->summary().result.converged);
+  for (unsigned int j = 0; j < s->summary().n_elements; ++j)
+    {
+      EXPECT_NEAR(s->normal_traction(j), -50, 1e-8);
+      EXPECT_NEAR(s->tangential_traction(j), 0, 1e-8);
+    }
+}
+
+
+
+// The output of a contact run: the files a user opens and summary.json in
+// the schema of every run (bodies, contact, timings and peak memory of every
+// phase, output included).
+TEST(Scene, ContactOutputFilesAndSummary)
+{
+  namespace fs         = std::filesystem;
+  const fs::path where = fs::temp_directory_path() / "dpana_scene_test";
+  fs::remove_all(where);
+  auto s = make_scene<2>(receding_contact(where.string()));
+  s->run(true);
+
+  for (const std::string file : {"body_1.vtu",
+                                 "bodies.pvd",
+                                 "contact_surface.vtu",
+                                 "contact.csv",
+                                 "parameters.prm",
+                                 "parameters.json",
+                                 "summary.json"})
+    EXPECT_TRUE(fs::exists(where / file)) << file;
+  EXPECT_FALSE(fs::exists(where / "contact.png")); // Plot = false
+
+  std::ifstream        in(where / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["dimension"], 2);
+  ASSERT_EQ(summary["bodies"].size(), 1u);
+  EXPECT_EQ(summary["bodies"][0]["dofs"], s->body(0).dof_handler().n_dofs());
+  EXPECT_EQ(summary["contact"]["converged"], true);
+  EXPECT_EQ(summary["contact"]["contact_elements"], s->summary().n_elements);
+  EXPECT_NEAR(summary["contact"]["max_normal_traction"].get<double>(),
+              50,
+              1e-8);
+  for (const std::string phase : {"assembly",
+                                  "contact surface",
+                                  "factorization",
+                                  "condensation",
+                                  "contact solve",
+                                  "recovery",
+                                  "output"})
+    {
+      EXPECT_TRUE(summary["timings"].contains(phase)) << phase;
+      EXPECT_GT(summary["peak_memory_mb"].value(phase, 0.0), 0.0) << phase;
+    }
+  fs::remove_all(where);
+}
