@@ -10,6 +10,7 @@
 
 #include <deal.II/base/patterns.h>
 
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -144,8 +145,8 @@ namespace dpana
       const auto &types = shape_types<dim>();
       const auto  t     = std::find_if(types.begin(),
                                   types.end(),
-                                  [this](const ShapeType<dim> &t) {
-                                    return t.type == type_name;
+                                  [this](const ShapeType<dim> &entry) {
+                                    return entry.type == type_name;
                                   });
       Assert(t != types.end(), dealii::ExcInternalError());
       if (!exists_in_dim(*t))
