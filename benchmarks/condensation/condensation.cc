@@ -112,16 +112,19 @@ namespace
          << "  subsection Geometry\n";
     if (dim == 2)
       text << "    set Type = rectangle\n"
-           << "    set Lower corner = 0, 0\n"
-           << "    set Upper corner = 40, 40\n"
-           << "    set Subdivisions = " << n << ", " << n << "\n";
+           << "    subsection Rectangle\n"
+           << "      set Lower corner = 0, 0\n"
+           << "      set Upper corner = 40, 40\n"
+           << "      set Subdivisions = " << n << ", " << n << "\n";
     else
       text << "    set Type = box\n"
-           << "    set Lower corner = 0, 0, 0\n"
-           << "    set Upper corner = 40, 20, 40\n"
-           << "    set Subdivisions = " << 2 * n << ", " << n << ", " << 2 * n
+           << "    subsection Box\n"
+           << "      set Lower corner = 0, 0, 0\n"
+           << "      set Upper corner = 40, 20, 40\n"
+           << "      set Subdivisions = " << 2 * n << ", " << n << ", " << 2 * n
            << "\n";
-    text << "  end\n"
+    text << "    end\n"
+         << "  end\n"
          << "  subsection Material\n"
          << "    set Young's modulus = 130000\n"
          << "    set Poisson's ratio = 0.2\n"

@@ -4,15 +4,16 @@
 #ifndef dpana_geometry_geometry_h
 #define dpana_geometry_geometry_h
 
+#include <dpana/geometry/shape.h>
+
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
 #include <deal.II/grid/tria.h>
 
 #include <map>
+#include <memory>
 #include <string>
-#include <vector>
 
 namespace dpana
 {
@@ -23,18 +24,35 @@ namespace dpana
      * and the simplex mesh (triangles in 2D, tetrahedra in 3D) built from
      * them.
      *
-     * The generated types are
+     * The subsection holds the entries every shape shares, `Type` and
+     * `Global refinements`, and one subsection per shape, named after its
+     * type, with the entries of that shape only:
+     *
+     *     subsection Geometry
+     *       set Type               = quarter disc
+     *       set Global refinements = 2
+     *       subsection Quarter disc
+     *         set Radius = 40
+     *         set Centre = 0, 40
+     *       end
+     *     end
+     *
+     * The types and the classes that make them are
      * - `rectangle` (2D) and `box` (3D): an axis-parallel brick with optional
-     *   tensor-product grading towards a plane, an edge or a point;
+     *   tensor-product grading towards a plane, an edge or a point (Brick);
      * - `half disc` and `quarter disc` (2D), `half cylinder` (3D): the lower
      *   half of a disc (the cylinder of the Hertz scenes, touching the ground
      *   at its lowest point), with optional local refinement around that
-     *   point;
+     *   point (Disc);
      * - `half annulus` and `quarter annulus` (2D): the lower half (or the
      *   lower right quarter) of an annulus, with optional local refinement
-     *   around the lowest point of the inner circle;
+     *   around the lowest point of the inner circle (Annulus);
      * - `gmsh`: an ASCII gmsh file (format 2.2 or 4.1) with named physical
-     *   groups.
+     *   groups (GmshFile).
+     *
+     * This class reads the shared entries, declares the subsection of every
+     * shape of the dimension and lets the chosen shape read its own and
+     * build the mesh.
      *
      * Every boundary face of a created mesh carries one of the ids listed by
      * boundary_names(). All manifold ids of the created mesh are flat: the
@@ -51,15 +69,18 @@ namespace dpana
       Geometry();
 
       /**
-       * Declares the entries of the "Geometry" subsection. The caller has
-       * already entered that subsection.
+       * Declares the entries of the "Geometry" subsection and the
+       * subsections of the shapes of this dimension. The caller has already
+       * entered that subsection.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
-       * Reads the entries (the caller has entered the subsection). Throws
-       * dpana::InputError with a one-line message naming the parameter or the
+       * Reads the entries of the subsection and of the subsection of the
+       * chosen shape (the caller has entered the "Geometry" subsection).
+       * Throws dpana::InputError with a one-line message naming the
+       * parameter by its path ("Geometry / Half disc / Radius: ...") or the
        * file on bad values, e.g. a missing mesh file.
        */
       void
@@ -77,7 +98,10 @@ namespace dpana
        * creates.
        */
       const std::map<std::string, dealii::types::boundary_id> &
-      boundary_names() const;
+      boundary_names() const
+      {
+        return names;
+      }
 
       /**
        * The boundary id of a named boundary. Throws dpana::InputError
@@ -94,52 +118,11 @@ namespace dpana
       description() const;
 
     private:
-      enum class Type
-      {
-        rectangle,
-        box,
-        half_disc,
-        quarter_disc,
-        half_cylinder,
-        half_annulus,
-        quarter_annulus,
-        gmsh
-      };
-
-      Type         type;
-      std::string  type_name;
-      unsigned int n_global_refinements;
-
-      // Rectangle and box.
-      dealii::Point<dim>        lower_corner;
-      dealii::Point<dim>        upper_corner;
-      std::vector<unsigned int> subdivisions;
-      dealii::Point<dim>        grading_centre;
-      std::vector<double>       grading_exponents;
-
-      // Discs, cylinder and annuli.
-      dealii::Point<dim> centre;
-      double             radius;
-      double             inner_radius;
-      double             outer_radius;
-      double             length;
-      unsigned int       n_axial_subdivisions;
-      unsigned int       n_contact_refinements;
-      double             contact_refinement_radius;
-
-      // Gmsh files.
-      std::string mesh_file;
+      std::string                 type_name;
+      unsigned int                n_global_refinements;
+      std::unique_ptr<Shape<dim>> shape;
 
       std::map<std::string, dealii::types::boundary_id> names;
-
-      void
-      create_brick(dealii::Triangulation<dim> &tria) const;
-
-      void
-      create_curved(dealii::Triangulation<dim> &tria) const;
-
-      void
-      read_gmsh(dealii::Triangulation<dim> &tria) const;
 
       void
       check_boundary_ids(const dealii::Triangulation<dim> &tria) const;

@@ -41,11 +41,13 @@ namespace
            "subsection Body 1\n"
            "  subsection Geometry\n"
            "    set Type = rectangle\n"
-           "    set Lower corner = 0, 0\n"
-           "    set Upper corner = 40, 40\n"
-           "    set Subdivisions = " +
+           "    subsection Rectangle\n"
+           "      set Lower corner = 0, 0\n"
+           "      set Upper corner = 40, 40\n"
+           "      set Subdivisions = " +
            N + ", " + N +
            "\n"
+           "    end\n"
            "  end\n"
            "  subsection Boundary conditions\n" +
            conditions +
@@ -345,9 +347,11 @@ TEST(ContactRun, Block3DNuZeroMatches2D)
                                 "subsection Body 1\n"
                                 "  subsection Geometry\n"
                                 "    set Type = box\n"
-                                "    set Lower corner = 0, 0, 0\n"
-                                "    set Upper corner = 40, 40, 20\n"
-                                "    set Subdivisions = 16, 8, 4\n"
+                                "    subsection Box\n"
+                                "      set Lower corner = 0, 0, 0\n"
+                                "      set Upper corner = 40, 40, 20\n"
+                                "      set Subdivisions = 16, 8, 4\n"
+                                "    end\n"
                                 "  end\n"
                                 "  subsection Material\n"
                                 "    set Poisson's ratio = 0\n"

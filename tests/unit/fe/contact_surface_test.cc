@@ -38,10 +38,12 @@ namespace
            "\n"
            "  subsection Geometry\n"
            "    set Type = " +
-           type + "\n    set Lower corner = " + lower +
-           "\n    set Upper corner = " + upper +
-           "\n    set Subdivisions = " + cells +
+           type + "\n    subsection " + (type == "box" ? "Box" : "Rectangle") +
+           "\n      set Lower corner = " + lower +
+           "\n      set Upper corner = " + upper +
+           "\n      set Subdivisions = " + cells +
            "\n"
+           "    end\n"
            "  end\n"
            "  subsection Boundary conditions\n" +
            conditions +
@@ -272,11 +274,13 @@ TEST(ContactSurface, ProjectedGapOfArcOnPlane)
 {
   const std::string disc    = "  subsection Geometry\n"
                               "    set Type = quarter disc\n"
-                              "    set Radius = 40\n"
-                              "    set Centre = 0, 40\n"
                               "    set Global refinements = 2\n"
-                              "    set Contact refinements = 2\n"
-                              "    set Contact refinement radius = 10\n"
+                              "    subsection Quarter disc\n"
+                              "      set Radius = 40\n"
+                              "      set Centre = 0, 40\n"
+                              "      set Contact refinements = 2\n"
+                              "      set Contact refinement radius = 10\n"
+                              "    end\n"
                               "  end\n"
                               "  subsection Boundary conditions\n"
                               "    set Symmetry = axis\n"
@@ -300,9 +304,11 @@ TEST(ContactSurface, ProjectedGapOfArcOnPlane)
     "set Dimension = 2\nset Number of bodies = 2\nsubsection Body 1\n" + disc +
       "subsection Body 2\n"
       "  subsection Geometry\n"
-      "    set Lower corner = 0, -20\n"
-      "    set Upper corner = 30, 0\n"
-      "    set Subdivisions = 7, 5\n"
+      "    subsection Rectangle\n"
+      "      set Lower corner = 0, -20\n"
+      "      set Upper corner = 30, 0\n"
+      "      set Subdivisions = 7, 5\n"
+      "    end\n"
       "  end\n"
       "  subsection Boundary conditions\n"
       "    set Fixed = bottom: x, y\n"
@@ -390,13 +396,15 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
   const std::string cylinder = "subsection Body 1\n"
                                "  subsection Geometry\n"
                                "    set Type = half cylinder\n"
-                               "    set Radius = 40\n"
-                               "    set Centre = 0, 40, 0\n"
-                               "    set Length = 8\n"
-                               "    set Axial subdivisions = 2\n"
                                "    set Global refinements = 1\n"
-                               "    set Contact refinements = 1\n"
-                               "    set Contact refinement radius = 10\n"
+                               "    subsection Half cylinder\n"
+                               "      set Radius = 40\n"
+                               "      set Centre = 0, 40, 0\n"
+                               "      set Length = 8\n"
+                               "      set Axial subdivisions = 2\n"
+                               "      set Contact refinements = 1\n"
+                               "      set Contact refinement radius = 10\n"
+                               "    end\n"
                                "  end\n"
                                "  subsection Boundary conditions\n"
                                "    set Fixed = top: x, y, z\n"
@@ -417,9 +425,11 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
                     "subsection Body 2\n"
                     "  subsection Geometry\n"
                     "    set Type = box\n"
-                    "    set Lower corner = -30, -10, 0\n"
-                    "    set Upper corner = 30, 0, 8\n"
-                    "    set Subdivisions = 7, 2, 3\n"
+                    "    subsection Box\n"
+                    "      set Lower corner = -30, -10, 0\n"
+                    "      set Upper corner = 30, 0, 8\n"
+                    "      set Subdivisions = 7, 2, 3\n"
+                    "    end\n"
                     "  end\n"
                     "  subsection Boundary conditions\n"
                     "    set Fixed = bottom: x, y, z\n"

@@ -55,6 +55,21 @@ namespace
 #endif
   }
 
+  // The text of the subsection of a shape.
+  std::string
+  shape(const std::string &subsection, const std::string &entries)
+  {
+    return "subsection " + subsection + "\n" + entries + "end\n";
+  }
+
+  // The text of a Geometry subsection of type gmsh reading @p file.
+  std::string
+  gmsh(const std::string &file)
+  {
+    return "set Type = gmsh\n" +
+           shape("Gmsh", "set Mesh file = " + file + "\n");
+  }
+
   // A geometry read from the text of a "Geometry" subsection.
   template <int dim>
   Geometry<dim>
@@ -164,11 +179,11 @@ namespace
 
 TEST(Geometry, RectangleCountsNamesMeasures)
 {
-  const auto geometry = make_geometry<2>("set Type = rectangle\n"
-                                         "set Lower corner = -10, 5\n"
-                                         "set Upper corner = 30, 45\n"
-                                         "set Subdivisions = 4, 2\n"
-                                         "set Global refinements = 1\n");
+  const auto geometry = make_geometry<2>(
+    "set Type = rectangle\nset Global refinements = 1\n" +
+    shape("Rectangle",
+          "set Lower corner = -10, 5\nset Upper corner = 30, 45\n"
+          "set Subdivisions = 4, 2\n"));
   EXPECT_EQ(names_of(geometry),
             (std::set<std::string>{"left", "right", "bottom", "top"}));
   dealii::Triangulation<2> tria;
@@ -195,11 +210,11 @@ TEST(Geometry, RectangleGradingMovesVerticesAsDocumented)
   // y = 40 k/4 to y = 40 (k/4)^2 = 0, 2.5, 10, 22.5, 40. Along x, centre 20
   // and exponent 3 with 2 layers on each side: x = 0, 20 - 20/8, 20,
   // 20 + 20/8, 40.
-  const auto               geometry = make_geometry<2>("set Type = rectangle\n"
-                                                       "set Upper corner = 40, 40\n"
-                                                       "set Subdivisions = 4, 4\n"
-                                                       "set Grading centre = 20, 0\n"
-                                                       "set Grading exponents = 3, 2\n");
+  const auto geometry = make_geometry<2>(
+    "set Type = rectangle\n" +
+    shape("Rectangle",
+          "set Upper corner = 40, 40\nset Subdivisions = 4, 4\n"
+          "set Grading centre = 20, 0\nset Grading exponents = 3, 2\n"));
   dealii::Triangulation<2> tria;
   geometry.create_triangulation(tria);
   std::set<long> xs, ys;
@@ -220,11 +235,11 @@ TEST(Geometry, RectangleGradingMovesVerticesAsDocumented)
 
 TEST(Geometry, BoxCountsNamesMeasures)
 {
-  const auto geometry = make_geometry<3>("set Type = box\n"
-                                         "set Lower corner = 0, 0, 0\n"
-                                         "set Upper corner = 2, 1, 3\n"
-                                         "set Subdivisions = 2, 1, 3\n"
-                                         "set Global refinements = 1\n");
+  const auto geometry = make_geometry<3>(
+    "set Type = box\nset Global refinements = 1\n" +
+    shape("Box",
+          "set Lower corner = 0, 0, 0\nset Upper corner = 2, 1, 3\n"
+          "set Subdivisions = 2, 1, 3\n"));
   EXPECT_EQ(
     names_of(geometry),
     (std::set<std::string>{"left", "right", "bottom", "top", "front", "back"}));
@@ -261,9 +276,8 @@ TEST(Geometry, HalfDiscConvergesToTheCircle)
   for (unsigned int k = 0; k <= 4; ++k)
     {
       const auto geometry = make_geometry<2>(
-        "set Type = half disc\nset Radius = 40\nset Centre = 0, 40\n"
-        "set Global refinements = " +
-        std::to_string(k) + "\n");
+        "set Type = half disc\nset Global refinements = " + std::to_string(k) +
+        "\n" + shape("Half disc", "set Radius = 40\nset Centre = 0, 40\n"));
       EXPECT_EQ(names_of(geometry), (std::set<std::string>{"top", "curved"}));
       dealii::Triangulation<2> tria;
       geometry.create_triangulation(tria);
@@ -311,9 +325,10 @@ TEST(Geometry, HalfDiscContactRefinement)
   // point (0, -40) of the circle of radius 40 centred at the origin.
   const double R        = 40.;
   const auto   geometry = make_geometry<2>(
-    "set Type = half disc\nset Radius = 40\nset Centre = 0, 0\n"
-      "set Global refinements = 2\nset Contact refinements = 3\n"
-      "set Contact refinement radius = 5\n");
+    "set Type = half disc\nset Global refinements = 2\n" +
+    shape("Half disc",
+          "set Radius = 40\nset Centre = 0, 0\nset Contact refinements = 3\n"
+            "set Contact refinement radius = 5\n"));
   dealii::Triangulation<2> tria;
   geometry.create_triangulation(tria);
   const Measures m = measure(tria);
@@ -361,8 +376,8 @@ TEST(Geometry, QuarterDisc)
 {
   const double R        = 2.;
   const auto   geometry = make_geometry<2>(
-    "set Type = quarter disc\nset Radius = 2\nset Centre = 1, 1\n"
-      "set Global refinements = 3\n");
+    "set Type = quarter disc\nset Global refinements = 3\n" +
+    shape("Quarter disc", "set Radius = 2\nset Centre = 1, 1\n"));
   EXPECT_EQ(names_of(geometry),
             (std::set<std::string>{"top", "curved", "axis"}));
   dealii::Triangulation<2> tria;
@@ -391,9 +406,10 @@ TEST(Geometry, HalfCylinder)
 {
   const double R = 40., L = 20.;
   const auto   geometry = make_geometry<3>(
-    "set Type = half cylinder\nset Radius = 40\n"
-      "set Centre = 0, 40, -5\nset Length = 20\n"
-      "set Axial subdivisions = 2\nset Global refinements = 1\n");
+    "set Type = half cylinder\nset Global refinements = 1\n" +
+    shape("Half cylinder",
+          "set Radius = 40\nset Centre = 0, 40, -5\nset Length = 20\n"
+            "set Axial subdivisions = 2\n"));
   EXPECT_EQ(names_of(geometry),
             (std::set<std::string>{"top", "curved", "front", "back"}));
   dealii::Triangulation<3> tria;
@@ -427,9 +443,11 @@ TEST(Geometry, HalfCylinderContactRefinementIsConforming)
   // i.e. its volume is the cross-section area times the length and the
   // front face has the cross-section's area.
   const auto geometry = make_geometry<3>(
-    "set Type = half cylinder\nset Radius = 1\nset Centre = 0, 0, 0\n"
-    "set Length = 1\nset Contact refinements = 2\n"
-    "set Contact refinement radius = 0.3\n");
+    "set Type = half cylinder\n" +
+    shape(
+      "Half cylinder",
+      "set Radius = 1\nset Centre = 0, 0, 0\nset Length = 1\n"
+      "set Contact refinements = 2\nset Contact refinement radius = 0.3\n"));
   dealii::Triangulation<3> tria;
   geometry.create_triangulation(tria);
   const Measures m = measure(tria);
@@ -453,9 +471,10 @@ TEST(Geometry, HalfAnnulus)
   // The cavity of the cylinder-in-a-cavity scene: Ri = 120, Ro = 240.
   const double Ri = 120., Ro = 240.;
   const auto   geometry =
-    make_geometry<2>("set Type = half annulus\nset Inner radius = 120\n"
-                     "set Outer radius = 240\nset Centre = 0, 120\n"
-                     "set Global refinements = 2\n");
+    make_geometry<2>("set Type = half annulus\nset Global refinements = 2\n" +
+                     shape("Half annulus",
+                           "set Inner radius = 120\nset Outer radius = 240\n"
+                           "set Centre = 0, 120\n"));
   EXPECT_EQ(names_of(geometry),
             (std::set<std::string>{"inner", "outer", "left", "right"}));
   dealii::Triangulation<2> tria;
@@ -492,9 +511,10 @@ TEST(Geometry, HalfAnnulusContactRefinement)
   // Refinement around the lowest point (0, -Ri) of the inner circle.
   const double Ri = 40., Ro = 120.;
   const auto   geometry = make_geometry<2>(
-    "set Type = half annulus\nset Inner radius = 40\n"
-      "set Outer radius = 120\nset Global refinements = 1\n"
-      "set Contact refinements = 2\nset Contact refinement radius = 10\n");
+    "set Type = half annulus\nset Global refinements = 1\n" +
+    shape("Half annulus",
+          "set Inner radius = 40\nset Outer radius = 120\n"
+            "set Contact refinements = 2\nset Contact refinement radius = 10\n"));
   dealii::Triangulation<2> tria;
   geometry.create_triangulation(tria);
   const Measures m = measure(tria);
@@ -530,9 +550,9 @@ TEST(Geometry, HalfAnnulusContactRefinement)
 TEST(Geometry, QuarterAnnulusForLame)
 {
   const double Ri = 1., Ro = 2.;
-  const auto   geometry =
-    make_geometry<2>("set Type = quarter annulus\nset Inner radius = 1\n"
-                     "set Outer radius = 2\nset Global refinements = 3\n");
+  const auto   geometry = make_geometry<2>(
+    "set Type = quarter annulus\nset Global refinements = 3\n" +
+    shape("Quarter annulus", "set Inner radius = 1\nset Outer radius = 2\n"));
   EXPECT_EQ(names_of(geometry),
             (std::set<std::string>{"inner", "outer", "x_axis", "y_axis"}));
   dealii::Triangulation<2> tria;
@@ -562,8 +582,7 @@ TEST(Geometry, GmshFormat22And41)
        {"rectangle_2x1_v22.msh", "rectangle_2x1_v41.msh"})
     {
       SCOPED_TRACE(file);
-      const auto geometry = make_geometry<2>(
-        "set Type = gmsh\nset Mesh file = " + data_dir() + file + "\n");
+      const auto geometry = make_geometry<2>(gmsh(data_dir() + file));
       // Names and tags as written in the file's $PhysicalNames; the surface
       // group "body" is not a boundary.
       EXPECT_EQ(geometry.boundary_names(),
@@ -597,8 +616,7 @@ TEST(Geometry, GmshFilesWrittenByGmsh)
        {"plate_with_hole_v41.msh", "plate_with_hole_v22.msh"})
     {
       SCOPED_TRACE(file);
-      const auto geometry = make_geometry<2>(
-        "set Type = gmsh\nset Mesh file = " + data_dir() + file + "\n");
+      const auto geometry = make_geometry<2>(gmsh(data_dir() + file));
       EXPECT_EQ(geometry.boundary_names(),
                 (std::map<std::string, boundary_id>{{"outer", 1},
                                                     {"hole", 2}}));
@@ -626,9 +644,8 @@ TEST(Geometry, GmshFilesWrittenByGmsh)
 
 TEST(Geometry, GmshRefined3D)
 {
-  const auto geometry =
-    make_geometry<3>("set Type = gmsh\nset Mesh file = " + data_dir() +
-                     "cube_v22.msh\nset Global refinements = 1\n");
+  const auto geometry = make_geometry<3>(gmsh(data_dir() + "cube_v22.msh") +
+                                         "set Global refinements = 1\n");
   EXPECT_EQ(
     names_of(geometry),
     (std::set<std::string>{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}));
@@ -656,8 +673,8 @@ TEST(Geometry, GmshTetrahedraFormat41)
   for (const unsigned int k : {0u, 1u})
     {
       const auto geometry = make_geometry<3>(
-        "set Type = gmsh\nset Mesh file = " + data_dir() +
-        "column_v41.msh\nset Global refinements = " + std::to_string(k) + "\n");
+        gmsh(data_dir() + "column_v41.msh") +
+        "set Global refinements = " + std::to_string(k) + "\n");
       EXPECT_EQ(geometry.boundary_names(),
                 (std::map<std::string, boundary_id>{{"bottom", 1},
                                                     {"top", 2},
@@ -700,44 +717,36 @@ input_error_of(const F &f)
 
 TEST(Geometry, Errors)
 {
-  EXPECT_EQ(input_error_of([] {
-              make_geometry<2>(
-                "set Type = gmsh\nset Mesh file = /nonexistent/x.msh\n");
-            }),
-            "Geometry: mesh file '/nonexistent/x.msh' not found (parameter "
-            "Mesh file)");
+  EXPECT_EQ(input_error_of(
+              [] { make_geometry<2>(gmsh("/nonexistent/x.msh")); }),
+            "Geometry / Gmsh / Mesh file: mesh file '/nonexistent/x.msh' not "
+            "found");
   EXPECT_EQ(input_error_of([] { make_geometry<2>("set Type = gmsh\n"); }),
-            "Geometry: mesh file '' not found (parameter Mesh file)");
+            "Geometry / Gmsh / Mesh file: mesh file '' not found");
 
   const std::string no_names = data_dir() + "rectangle_2x1_no_names.msh";
-  EXPECT_EQ(input_error_of([&] {
-              make_geometry<2>("set Type = gmsh\nset Mesh file = " + no_names +
-                               "\n");
-            }),
-            "Geometry: mesh file '" + no_names +
+  EXPECT_EQ(input_error_of([&] { make_geometry<2>(gmsh(no_names)); }),
+            "Geometry / Gmsh / Mesh file: mesh file '" + no_names +
               "' names no boundary: give every boundary a physical group "
-              "with a name, of dimension 1 (parameter Mesh file)");
+              "with a name, of dimension 1");
 
   // A side of the rectangle in no physical group.
   const std::string open_side = data_dir() + "rectangle_2x1_open_side.msh";
   EXPECT_EQ(input_error_of([&] {
-              const auto g = make_geometry<2>(
-                "set Type = gmsh\nset Mesh file = " + open_side + "\n");
+              const auto               g = make_geometry<2>(gmsh(open_side));
               dealii::Triangulation<2> tria;
               g.create_triangulation(tria);
             }),
-            "Geometry: mesh file '" + open_side +
-              "' has boundary faces in no physical group (parameter Mesh "
-              "file)");
+            "Geometry / Gmsh / Mesh file: mesh file '" + open_side +
+              "' has boundary faces in no physical group");
 
   // A 2D file read as a 3D mesh.
   EXPECT_NE(input_error_of([&] {
-              const auto g = make_geometry<3>(
-                "set Type = gmsh\nset Mesh file = " + data_dir() +
-                "rectangle_2x1_v22.msh\n");
+              const auto g =
+                make_geometry<3>(gmsh(data_dir() + "rectangle_2x1_v22.msh"));
               dealii::Triangulation<3> tria;
               g.create_triangulation(tria);
-            }).find("Geometry: mesh file"),
+            }).find("Geometry / Gmsh / Mesh file: mesh file"),
             std::string::npos);
 
   const auto rectangle = make_geometry<2>("set Type = rectangle\n");
@@ -749,16 +758,55 @@ TEST(Geometry, Errors)
   EXPECT_EQ(input_error_of([] { make_geometry<3>("set Type = half disc\n"); }),
             "Geometry: type 'half disc' needs Dimension = 2 (parameter Type)");
   EXPECT_EQ(input_error_of([] {
-              make_geometry<2>("set Type = half annulus\n"
-                               "set Inner radius = 2\nset Outer radius = 1\n");
+              make_geometry<2>(
+                "set Type = half annulus\n" +
+                shape("Half annulus",
+                      "set Inner radius = 2\nset Outer radius = 1\n"));
             }),
-            "Geometry: need 0 < Inner radius < Outer radius (parameters "
-            "Inner radius, Outer radius)");
+            "Geometry / Half annulus: need 0 < Inner radius < Outer radius");
   EXPECT_EQ(input_error_of([] {
-              make_geometry<2>("set Type = rectangle\n"
-                               "set Lower corner = 0, 1\n"
-                               "set Upper corner = 1, 1\n");
+              make_geometry<2>("set Type = rectangle\n" +
+                               shape("Rectangle",
+                                     "set Lower corner = 0, 1\n"
+                                     "set Upper corner = 1, 1\n"));
             }),
-            "Geometry: Upper corner must exceed Lower corner in every "
-            "coordinate (parameters Lower corner, Upper corner)");
+            "Geometry / Rectangle / Upper corner: must exceed Lower corner in "
+            "every coordinate");
+  EXPECT_EQ(input_error_of([] {
+              make_geometry<2>("set Type = rectangle\n" +
+                               shape("Rectangle",
+                                     "set Grading centre = 2, 0\n"
+                                     "set Grading exponents = 2, 1\n"));
+            }),
+            "Geometry / Rectangle / Grading centre: must lie between Lower "
+            "corner and Upper corner in every graded direction");
+  EXPECT_EQ(input_error_of([] {
+              make_geometry<2>("set Type = quarter disc\n" +
+                               shape("Quarter disc", "set Radius = 0\n"));
+            }),
+            "Geometry / Quarter disc / Radius: must be positive");
+  EXPECT_EQ(input_error_of([] {
+              make_geometry<3>("set Type = half cylinder\n" +
+                               shape("Half cylinder",
+                                     "set Contact refinements = 1\n"
+                                     "set Contact refinement radius = 0\n"));
+            }),
+            "Geometry / Half cylinder / Contact refinement radius: must be "
+            "positive when Contact refinements > 0");
+}
+
+
+
+// The entries of one shape live in its own subsection only: another shape's
+// entry is unknown there, and the subsections of the other dimension are
+// not declared.
+TEST(Geometry, EachShapeHasItsOwnEntries)
+{
+  EXPECT_ANY_THROW(make_geometry<2>(
+    "set Type = half disc\n" + shape("Half disc", "set Inner radius = 1\n")));
+  EXPECT_ANY_THROW(make_geometry<2>("set Type = half disc\nset Radius = 1\n"));
+  EXPECT_ANY_THROW(make_geometry<2>(
+    "set Type = rectangle\n" + shape("Box", "set Upper corner = 1, 1, 1\n")));
+  EXPECT_ANY_THROW(make_geometry<2>("set Type = rectangle\n" +
+                                    shape("Rectangle", "set Length = 1\n")));
 }

@@ -70,9 +70,11 @@ namespace
              16, 16, "    set Young's modulus = " + std::to_string(E1) + "\n") +
            "subsection Body 2\n"
            "  subsection Geometry\n"
-           "    set Lower corner = 0, -80\n"
-           "    set Upper corner = 80, 0\n"
-           "    set Subdivisions = 32, 32\n"
+           "    subsection Rectangle\n"
+           "      set Lower corner = 0, -80\n"
+           "      set Upper corner = 80, 0\n"
+           "      set Subdivisions = 32, 32\n"
+           "    end\n"
            "  end\n"
            "  subsection Material\n"
            "    set Young's modulus = " +

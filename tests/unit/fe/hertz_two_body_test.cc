@@ -29,12 +29,14 @@ namespace
   foundation(const double E)
   {
     return "  subsection Geometry\n"
-           "    set Lower corner = 0, -80\n"
-           "    set Upper corner = 80, 0\n"
-           "    set Subdivisions = 32, 32\n"
-           "    set Grading centre = 0, 0\n"
-           "    set Grading exponents = 2, 2\n"
            "    set Global refinements = 1\n"
+           "    subsection Rectangle\n"
+           "      set Lower corner = 0, -80\n"
+           "      set Upper corner = 80, 0\n"
+           "      set Subdivisions = 32, 32\n"
+           "      set Grading centre = 0, 0\n"
+           "      set Grading exponents = 2, 2\n"
+           "    end\n"
            "  end\n"
            "  subsection Material\n"
            "    set Young's modulus = " +
@@ -114,14 +116,16 @@ namespace
                      0,
                      "  subsection Geometry\n"
                      "    set Type = quarter annulus\n"
-                     "    set Inner radius = 120\n"
-                     "    set Outer radius = 360\n"
-                     "    set Centre = 0, 120\n"
                      "    set Global refinements = 2\n"
-                     "    set Contact refinements = " +
+                     "    subsection Quarter annulus\n"
+                     "      set Inner radius = 120\n"
+                     "      set Outer radius = 360\n"
+                     "      set Centre = 0, 120\n"
+                     "      set Contact refinements = " +
                        std::to_string(m + 1) +
                        "\n"
-                       "    set Contact refinement radius = 21\n"
+                       "      set Contact refinement radius = 21\n"
+                       "    end\n"
                        "  end\n"
                        "  subsection Boundary conditions\n"
                        "    set Symmetry = y_axis\n"

@@ -45,8 +45,10 @@ namespace
     dpana::Body<2>::declare_parameters(prm);
     prm.parse_input_from_string("subsection Geometry\n"
                                 "  set Type = quarter annulus\n"
-                                "  set Inner radius = 10\n"
-                                "  set Outer radius = 20\n"
+                                "  subsection Quarter annulus\n"
+                                "    set Inner radius = 10\n"
+                                "    set Outer radius = 20\n"
+                                "  end\n"
                                 "  set Global refinements = " +
                                 std::to_string(refinements) +
                                 "\n"

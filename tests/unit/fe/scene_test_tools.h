@@ -44,11 +44,13 @@ namespace dpana
       return "subsection Body 1\n"
              "  subsection Geometry\n"
              "    set Type = rectangle\n"
-             "    set Lower corner = 0, 0\n"
-             "    set Upper corner = 40, 40\n"
-             "    set Subdivisions = " +
+             "    subsection Rectangle\n"
+             "      set Lower corner = 0, 0\n"
+             "      set Upper corner = 40, 40\n"
+             "      set Subdivisions = " +
              std::to_string(nx) + ", " + std::to_string(ny) +
              "\n"
+             "    end\n"
              "  end\n"
              "  subsection Material\n" +
              material +
@@ -106,15 +108,17 @@ namespace dpana
              "subsection Body 1\n"
              "  subsection Geometry\n"
              "    set Type = quarter disc\n"
-             "    set Radius = 40\n"
-             "    set Centre = 0, 40\n"
              "    set Global refinements = 2\n"
-             "    set Contact refinements = " +
+             "    subsection Quarter disc\n"
+             "      set Radius = 40\n"
+             "      set Centre = 0, 40\n"
+             "      set Contact refinements = " +
              std::to_string(m) +
              "\n"
-             "    set Contact refinement radius = " +
+             "      set Contact refinement radius = " +
              std::to_string(refinement_radius) +
              "\n"
+             "    end\n"
              "  end\n"
              "  subsection Boundary conditions\n"
              "    set Symmetry = axis\n"
