@@ -179,12 +179,12 @@ namespace dpana
                          faces[b].centroid * tau_surface[dim - 2];
                 });
       std::vector<bool> taken(faces.size(), false);
-      for (const unsigned int seed : order)
+      for (const unsigned int start : order)
         {
-          if (taken[seed])
+          if (taken[start])
             continue;
-          std::vector<unsigned int> group(1, seed);
-          taken[seed] = true;
+          std::vector<unsigned int> group(1, start);
+          taken[start] = true;
           while (group.size() < size)
             {
               dealii::Point<dim> c;

@@ -72,6 +72,11 @@ namespace dpana
      * @f]
      * and the contact displacements pick up V^T R alpha = G^T alpha: exactly
      * the equality rows of the ContactProblem.
+     *
+     * The condensations of the bodies are combined into the contact problem
+     * by assemble_contact_problem() (contact_problem.h); the number of
+     * columns per blocked solve is a parameter of the run
+     * (condensation::Parameters, parameters.h).
      */
     template <int dim>
     class Condenser
@@ -95,8 +100,9 @@ namespace dpana
 
       /**
        * A, s_o, G, e by blocked solves: @p columns_per_pass columns of V at a
-       * time are handed to SparseCholesky::solve() (which itself works in
-       * blocks of its block size).
+       * time (Parameters::columns_per_solve) are handed to
+       * SparseCholesky::solve() (which itself works in blocks of its block
+       * size).
        */
       void
       condense(const unsigned int columns_per_pass = 256);

@@ -6,6 +6,8 @@
 // contact runs against exact or independent results.
 
 #include <dpana/body/body.h>
+#include <dpana/condensation/contact_problem.h>
+#include <dpana/condensation/parameters.h>
 #include <dpana/scene/run.h>
 #include <dpana/scene/scene.h>
 
@@ -177,6 +179,118 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
                 << " component " << k;
             }
       }
+}
+
+
+
+// The contact problem of two bodies adds their condensations: A = A1 + A2,
+// D = s_o1 + s_o2 minus the gap integrals in the normal rows, and the
+// equality rows of both floating bodies stacked, Body 1 first. The cylinder
+// of hertz_prm() is free to move along its axis, and so is the foundation
+// here (held only in x), pressed from below. The problem must also be the
+// one the contact run solves, to the last digit.
+TEST(Condensation, ContactProblemOfTwoFloatingBodies)
+{
+  const std::string foundation = "  subsection Geometry\n"
+                                 "    set Type = rectangle\n"
+                                 "    subsection Rectangle\n"
+                                 "      set Lower corner = 0, -40\n"
+                                 "      set Upper corner = 40, 0\n"
+                                 "      set Subdivisions = 8, 8\n"
+                                 "    end\n"
+                                 "  end\n"
+                                 "  subsection Boundary conditions\n"
+                                 "    set Symmetry = left\n"
+                                 "    set Fixed = bottom: x\n"
+                                 "  end\n"
+                                 "  subsection Loads\n"
+                                 "    set Pressure = bottom: 100\n"
+                                 "  end\n";
+  auto              s = make_scene<2>(hertz_prm(1, 15, 0.3, foundation), 2);
+  s->assemble();
+  s->build_contact_surface();
+  s->condense();
+  const auto &c1 = s->condenser(0), &c2 = s->condenser(1);
+  ASSERT_EQ(c1.n_free_modes(), 1u);
+  ASSERT_EQ(c2.n_free_modes(), 1u);
+
+  const auto        &surface = s->surface(0);
+  const unsigned int n       = surface.n_elements();
+  const auto         P       = condensation::assemble_contact_problem<2>(
+    {&c1, &c2}, surface, 0.3, contact::ConeModel::interval, 16);
+  EXPECT_EQ(P.dim, 2u);
+  EXPECT_EQ(P.n_elements(), n);
+  EXPECT_TRUE(P.A == c1.compliance() + c2.compliance());
+  double largest_gap = 0;
+  for (unsigned int j = 0; j < n; ++j)
+    {
+      const double gap = surface.element(j).gap_integral;
+      largest_gap      = std::max(largest_gap, gap);
+      EXPECT_EQ(P.D(2 * j),
+                c1.load_term()(2 * j) + c2.load_term()(2 * j) - gap);
+      EXPECT_EQ(P.D(2 * j + 1),
+                c1.load_term()(2 * j + 1) + c2.load_term()(2 * j + 1));
+      EXPECT_EQ(P.mu(j), 0.3);
+    }
+  EXPECT_GT(largest_gap, 0.0); // the arc rises away from the axis
+  ASSERT_EQ(P.n_equalities(), 2u);
+  EXPECT_TRUE(P.G.row(0) == c1.equilibrium_matrix().row(0));
+  EXPECT_TRUE(P.G.row(1) == c2.equilibrium_matrix().row(0));
+  EXPECT_EQ(P.e(0), c1.equilibrium_rhs()(0));
+  EXPECT_EQ(P.e(1), c2.equilibrium_rhs()(0));
+  EXPECT_NE(P.e(1), 0.0); // the pressure on the foundation
+  EXPECT_NO_THROW(P.validate());
+
+  const auto &Q = s->problem();
+  EXPECT_TRUE(P.A == Q.A && P.D == Q.D && P.mu == Q.mu && P.G == Q.G &&
+              P.e == Q.e);
+  EXPECT_EQ(P.cone, Q.cone);
+  EXPECT_EQ(condensation::largest_asymmetry<2>({&c1, &c2}),
+            std::max(c1.asymmetry(), c2.asymmetry()));
+}
+
+
+
+// A body held by its own supports adds no equality row.
+TEST(Condensation, ContactProblemOfHeldBody)
+{
+  auto s = make_scene<2>(
+    block_prm("set Fixed = top: x, y", "", "set Obstacle point = 0, -0.01"));
+  s->assemble();
+  s->build_contact_surface();
+  s->condense();
+  const auto &c = s->condenser(0);
+  const auto  P = condensation::assemble_contact_problem<2>(
+    {&c}, s->surface(0), 0, contact::ConeModel::interval, 16);
+  EXPECT_EQ(P.n_equalities(), 0u);
+  EXPECT_EQ(P.G.cols(), P.A.cols());
+  EXPECT_TRUE(P.A == c.compliance());
+  for (unsigned int j = 0; j < P.n_elements(); ++j)
+    {
+      // The gap to the plane y = -0.01 over an element of 10 mm.
+      EXPECT_NEAR(s->surface(0).element(j).gap_integral, 0.1, 1e-12);
+      EXPECT_EQ(P.D(2 * j),
+                c.load_term()(2 * j) - s->surface(0).element(j).gap_integral);
+    }
+}
+
+
+
+// The condensation declares and parses its own entry.
+TEST(Condensation, ColumnsPerSolveParameter)
+{
+  dealii::ParameterHandler prm;
+  prm.enter_subsection("Contact");
+  condensation::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  condensation::Parameters parameters;
+  prm.enter_subsection("Contact");
+  parameters.parse_parameters(prm);
+  EXPECT_EQ(parameters.columns_per_solve, 256u);
+  prm.set("Columns per solve", "7");
+  parameters.parse_parameters(prm);
+  EXPECT_EQ(parameters.columns_per_solve, 7u);
+  prm.leave_subsection();
 }
 
 

@@ -6,6 +6,7 @@
 // elements, frames, pairing of two bodies.
 
 #include <dpana/base/exceptions.h>
+#include <dpana/contact_surface/parameters.h>
 #include <dpana/scene/scene.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -473,6 +474,127 @@ TEST(ContactSurface, UncoveredSurfaceIsRefusedIn3D)
     {
       const std::string what = e.what();
       EXPECT_NE(what.find("is not covered by"), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+}
+
+
+
+namespace
+{
+  // Parameters of the contact surface read from the entries @p entries of
+  // a Contact subsection where only the contact surface declared its own.
+  template <int dim>
+  contact_surface::Parameters<dim>
+  parse_surface_parameters(const std::string &entries)
+  {
+    dealii::ParameterHandler prm;
+    prm.enter_subsection("Contact");
+    contact_surface::Parameters<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.parse_input_from_string("subsection Contact\n" + entries + "end\n");
+    prm.enter_subsection("Contact");
+    contact_surface::Parameters<dim> parameters;
+    parameters.parse_parameters(prm);
+    prm.leave_subsection();
+    return parameters;
+  }
+
+  // The message of the error that parsing @p entries throws, or "".
+  template <int dim>
+  std::string
+  surface_parameter_error(const std::string &entries)
+  {
+    try
+      {
+        parse_surface_parameters<dim>(entries);
+      }
+    catch (const InputError &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+} // namespace
+
+
+
+// The contact surface declares and parses its own entries of the Contact
+// subsection; an empty contact direction or obstacle point means "not
+// given", and the options of the second body's surface carry the negated
+// direction.
+TEST(ContactSurface, ParametersDeclaredAndParsed)
+{
+  const auto defaults = parse_surface_parameters<3>("");
+  EXPECT_EQ(defaults.boundary[0], "bottom");
+  EXPECT_EQ(defaults.boundary[1], "top");
+  EXPECT_EQ(defaults.region_centre, dealii::Point<3>());
+  EXPECT_EQ(defaults.region_half_width, 0.0);
+  EXPECT_EQ(defaults.faces_per_element, 0u);
+  EXPECT_EQ(defaults.direction.norm(), 0.0);
+  EXPECT_FALSE(defaults.obstacle_point_given);
+
+  const auto p =
+    parse_surface_parameters<2>("set Boundary 1 = curved\n"
+                                "set Boundary 2 = floor\n"
+                                "set Candidate centre = 1, 2\n"
+                                "set Candidate half width = 15\n"
+                                "set Faces per contact element = 4\n"
+                                "set Contact direction = 0, -2\n"
+                                "set Obstacle point = 0, -0.5\n");
+  EXPECT_EQ(p.region_centre, dealii::Point<2>(1, 2));
+  EXPECT_EQ(p.region_half_width, 15.0);
+  EXPECT_EQ(p.faces_per_element, 4u);
+  EXPECT_EQ(p.direction, dealii::Point<2>(0, -2));
+  EXPECT_TRUE(p.obstacle_point_given);
+  EXPECT_EQ(p.obstacle_point, dealii::Point<2>(0, -0.5));
+
+  const auto first = p.surface_options(0, "Body 1", {{"curved", 3}});
+  EXPECT_EQ(first.boundary, "curved");
+  EXPECT_EQ(first.boundary_id, 3);
+  EXPECT_EQ(first.body, "Body 1");
+  EXPECT_EQ(first.region_centre, p.region_centre);
+  EXPECT_EQ(first.region_half_width, 15.0);
+  EXPECT_EQ(first.faces_per_element, 4u);
+  EXPECT_EQ(first.direction, p.direction);
+  const auto second =
+    p.surface_options(1, "Body 2", {{"floor", 5}, {"left", 1}});
+  EXPECT_EQ(second.boundary_id, 5);
+  EXPECT_EQ(second.direction, -p.direction);
+  try
+    {
+      p.surface_options(1, "Body 2", {{"bottom", 0}, {"left", 1}});
+      FAIL() << "an unknown boundary was accepted";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_EQ(std::string(e.what()),
+                "Contact / Boundary 2: Body 2 has no boundary named 'floor' "
+                "(it has: bottom, left)");
+    }
+}
+
+
+
+// Bad points and vectors are refused with one line that names the entry by
+// its full path.
+TEST(ContactSurface, ParameterErrorsNameTheEntry)
+{
+  EXPECT_EQ(surface_parameter_error<2>("set Contact direction = 0, 0\n"),
+            "Contact / Contact direction: must not be the zero vector "
+            "(leave it empty for the element normals)");
+  for (const auto &[entry, value] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"Contact direction", "0, nan"},
+         {"Contact direction", "0, -1, 0"},
+         {"Candidate centre", "inf, 0"},
+         {"Candidate centre", ""},
+         {"Obstacle point", "1"}})
+    {
+      const std::string what =
+        surface_parameter_error<2>("set " + entry + " = " + value + "\n");
+      EXPECT_EQ(what.rfind("Contact / " + entry + ": ", 0), 0u)
+        << entry << " = " << value << ": " << what;
       EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }
 }
