@@ -37,8 +37,9 @@ namespace dpana
 
 
 
-  // Each component declares and reads its own subsection; the geometry
-  // names the body in its messages through the prefix added here.
+  // The body enters the subsection of each of its components, which
+  // declares and reads its own entries. The messages of the geometry do not
+  // know the name of the body; it is added to them here.
   template <int dim>
   void
   Body<dim>::declare_parameters(dealii::ParameterHandler &prm)

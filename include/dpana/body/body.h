@@ -77,7 +77,8 @@ namespace dpana
    * A body is held if the only rigid motion (the 3 in 2D, 6 in 3D
    * infinitesimal translations and rotations) that satisfies the homogeneous
    * constraints is zero. setup() computes which ones are left free (see
-   * free_rigid_modes()); K_r is singular exactly when there are any.
+   * RigidModes and free_rigid_modes()); K_r is singular exactly when there
+   * are any.
    */
   template <int dim>
   class Body
@@ -108,7 +109,9 @@ namespace dpana
 
     /**
      * Declares the subsections Geometry, Material, Boundary conditions and
-     * Loads. The caller has entered the body's subsection ("Body 1").
+     * Loads, each by its own component (geometry::Geometry, Material,
+     * BoundaryConditions, Loads). The caller has entered the body's
+     * subsection ("Body 1").
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
