@@ -144,6 +144,9 @@ namespace dpana
       return tria;
     }
 
+    /**
+     * The boundary names of the mesh and their boundary ids.
+     */
     void
     set_boundary_names(
       const std::map<std::string, dealii::types::boundary_id> &new_names)
@@ -163,6 +166,10 @@ namespace dpana
     std::string
     geometry_description() const;
 
+    /**
+     * The components of the body (its material, kinematic conditions and
+     * loads), for programs that set them up themselves, and its name.
+     */
     Material &
     material()
     {
