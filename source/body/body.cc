@@ -2,18 +2,321 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 //
-// Explicit instantiation of the elastic body and its conditions for dim = 2
-// and 3.
+// The body: its parameters and mesh, the set-up of its degrees of freedom
+// (the kinematic conditions are in constraints.cc, the rigid motions in
+// rigid_modes.cc), the solution, and the explicit instantiation of the
+// class for dim = 2 and 3. The assembly and the postprocessing are in
+// assembly.cc and postprocessing.cc.
 
-#include <dpana/body/body.templates.h>
-#include <dpana/body/boundary_conditions.templates.h>
+#include <dpana/base/exceptions.h>
+#include <dpana/body/body.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
 
 namespace dpana
 {
-  template struct BoundaryConditions<2>;
-  template struct BoundaryConditions<3>;
-  template struct Loads<2>;
-  template struct Loads<3>;
+  // @sect3{Construction and parameters}
+
+  template <int dim>
+  Body<dim>::Body(const std::string &name)
+    : name_(name)
+    , fe_(dealii::FE_SimplexP<dim>(1), dim)
+    , mapping_(dealii::FE_SimplexP<dim>(1))
+    , applied_resultant()
+  {
+  }
+
+
+
+  // The body enters the subsection of each of its components, which
+  // declares and reads its own entries. The messages of the geometry do not
+  // know the name of the body; it is added to them here.
+  template <int dim>
+  void
+  Body<dim>::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    geometry::Geometry<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Material");
+    Material::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Boundary conditions");
+    BoundaryConditions<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Loads");
+    Loads<dim>::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    geometry = std::make_unique<geometry::Geometry<dim>>();
+    prm.enter_subsection("Geometry");
+    try
+      {
+        geometry->parse_parameters(prm);
+      }
+    catch (const InputError &e)
+      {
+        // Name the body in the message, as all other entries do.
+        throw InputError(name_ + " / " + e.what());
+      }
+    prm.leave_subsection();
+    prm.enter_subsection("Material");
+    material_.parse_parameters(prm, name_ + " / Material");
+    prm.leave_subsection();
+    prm.enter_subsection("Boundary conditions");
+    bcs.parse_parameters(prm, name_ + " / Boundary conditions");
+    prm.leave_subsection();
+    prm.enter_subsection("Loads");
+    loads_.parse_parameters(prm, name_ + " / Loads");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::create_mesh()
+  {
+    AssertThrow(geometry != nullptr,
+                dealii::ExcMessage("Body::create_mesh() needs the "
+                                   "parameters of a Geometry subsection."));
+    tria.clear();
+    geometry->create_triangulation(tria);
+    names = geometry->boundary_names();
+  }
+
+
+
+  template <int dim>
+  std::string
+  Body<dim>::geometry_description() const
+  {
+    std::ostringstream s;
+    if (geometry)
+      s << geometry->description() << ", ";
+    s << tria.n_active_cells() << (dim == 2 ? " triangles" : " tetrahedra")
+      << ", " << tria.n_used_vertices() << " vertices";
+    return s.str();
+  }
+
+
+
+  // @sect3{Named boundaries}
+
+  // A boundary name used by a parameter must be one of the names of the
+  // mesh, and some boundary face must carry it: a condition on an empty set
+  // of faces would silently do nothing.
+  template <int dim>
+  dealii::types::boundary_id
+  Body<dim>::resolve(const std::string &boundary,
+                     const std::string &parameter) const
+  {
+    const auto it = names.find(boundary);
+    if (it == names.end())
+      {
+        std::string list;
+        for (const auto &[n, id] : names)
+          list += (list.empty() ? "" : ", ") + n;
+        throw InputError(parameter + ": no boundary named '" + boundary +
+                         "' (this body has: " + list + ")");
+      }
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == it->second)
+        return it->second;
+    throw InputError(parameter + ": no face of the mesh carries boundary '" +
+                     boundary + "' (id " + std::to_string(it->second) + ")");
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::check_boundary_names() const
+  {
+    for (const auto &[boundary, parameter] : bcs.used_boundaries())
+      resolve(boundary, parameter);
+    for (const auto &[boundary, parameter] : loads_.used_boundaries())
+      resolve(boundary, parameter);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  Body<dim>::boundary_vertices(const dealii::types::boundary_id id) const
+  {
+    std::set<unsigned int> vertices;
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == id)
+        for (const unsigned int v : face->vertex_indices())
+          vertices.insert(face->vertex_index(v));
+    return {vertices.begin(), vertices.end()};
+  }
+
+
+
+  // @sect3{Set-up: degrees of freedom, constraints, rigid motions}
+
+  template <int dim>
+  void
+  Body<dim>::setup()
+  {
+    // Check every input before any work is done.
+    check_boundary_names();
+    material_.check(name_ + " / Material");
+
+    dof_handler_.reinit(tria);
+    dof_handler_.distribute_dofs(fe_);
+    number_vertex_dofs();
+
+    make_constraints();
+
+    dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+    dealii::DoFTools::make_sparsity_pattern(dof_handler_,
+                                            dsp,
+                                            constraints_,
+                                            false);
+    sparsity_pattern.copy_from(dsp);
+    matrix.reinit(sparsity_pattern);
+    rhs.reinit(dof_handler_.n_dofs());
+    u.reinit(dof_handler_.n_dofs());
+
+    rigid_modes = RigidModes<dim>(tria, dofs_of_vertex, dof_handler_.n_dofs());
+    free_modes  = rigid_modes.free_modes(constraints_);
+    locate_concentrated_forces();
+  }
+
+
+
+  // The nodal degrees of freedom of each vertex. For the vector-valued P1
+  // element the cell-local degrees of freedom are ordered vertex by vertex,
+  // component by component within a vertex; this is checked once.
+  template <int dim>
+  void
+  Body<dim>::number_vertex_dofs()
+  {
+    for (unsigned int i = 0; i < fe_.n_dofs_per_cell(); ++i)
+      AssertThrow(fe_.system_to_component_index(i).first == i % dim,
+                  dealii::ExcInternalError());
+    dofs_of_vertex.assign(tria.n_vertices(), {});
+    for (auto &d : dofs_of_vertex)
+      d.fill(dealii::numbers::invalid_dof_index);
+    std::vector<dealii::types::global_dof_index> local(fe_.n_dofs_per_cell());
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            dofs_of_vertex[cell->vertex_index(v)][c] = local[v * dim + c];
+      }
+  }
+
+
+
+  // A concentrated force acts at the used vertex nearest to the requested
+  // point (the first of them if several are equally near).
+  template <int dim>
+  void
+  Body<dim>::locate_concentrated_forces()
+  {
+    concentrated.clear();
+    concentrated_vertex.clear();
+    const auto &vertices = tria.get_vertices();
+    for (const auto &cf : loads_.concentrated_forces)
+      {
+        unsigned int best = dealii::numbers::invalid_unsigned_int;
+        for (unsigned int v = 0; v < vertices.size(); ++v)
+          if (tria.vertex_used(v) &&
+              (best == dealii::numbers::invalid_unsigned_int ||
+               vertices[v].distance(cf.point) <
+                 vertices[best].distance(cf.point)))
+            best = v;
+        concentrated.push_back({cf.point, vertices[best], cf.force});
+        concentrated_vertex.push_back(best);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::check_held() const
+  {
+    if (free_modes.empty())
+      return;
+    std::string list;
+    for (const auto &m : free_modes)
+      list += (list.empty() ? "" : ", ") + m.description;
+    throw InputError(name_ + ": not held: rigid motion" +
+                     (free_modes.size() > 1 ? "s " : " ") + list +
+                     (free_modes.size() > 1 ? " are" : " is") +
+                     " free; add Dirichlet or symmetry conditions");
+  }
+
+
+
+  // @sect3{Solution}
+
+  template <int dim>
+  void
+  Body<dim>::solve()
+  {
+    check_held();
+    cholesky.factorize(matrix, constraints_);
+    cholesky.solve_condensed(rhs, u);
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::set_solution(const dealii::Vector<double> &solution)
+  {
+    AssertThrow(solution.size() == dof_handler_.n_dofs(),
+                dealii::ExcDimensionMismatch(solution.size(),
+                                             dof_handler_.n_dofs()));
+    u = solution;
+  }
+
+
+
+  template <int dim>
+  double
+  Body<dim>::max_displacement() const
+  {
+    double m = 0;
+    for (const auto &d : dofs_of_vertex)
+      if (d[0] != dealii::numbers::invalid_dof_index)
+        {
+          double s = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            s += u[d[c]] * u[d[c]];
+          m = std::max(m, std::sqrt(s));
+        }
+    return m;
+  }
+
+
+
+  // The members defined in this file and the inline ones; those of
+  // constraints.cc, assembly.cc and postprocessing.cc are instantiated
+  // there.
   template class Body<2>;
   template class Body<3>;
 } // namespace dpana

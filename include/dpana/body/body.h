@@ -5,7 +5,9 @@
 #define dpana_body_body_h
 
 #include <dpana/body/boundary_conditions.h>
+#include <dpana/body/loads.h>
 #include <dpana/body/material.h>
+#include <dpana/body/rigid_modes.h>
 #include <dpana/geometry/geometry.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
@@ -75,7 +77,8 @@ namespace dpana
    * A body is held if the only rigid motion (the 3 in 2D, 6 in 3D
    * infinitesimal translations and rotations) that satisfies the homogeneous
    * constraints is zero. setup() computes which ones are left free (see
-   * free_rigid_modes()); K_r is singular exactly when there are any.
+   * RigidModes and free_rigid_modes()); K_r is singular exactly when there
+   * are any.
    */
   template <int dim>
   class Body
@@ -83,13 +86,10 @@ namespace dpana
   public:
     /**
      * A rigid motion left free by the constraints: a combination, with the
-     * given coefficients, of the columns of rigid_mode_vectors().
+     * given coefficients, of the columns of rigid_mode_vectors(), and its
+     * description.
      */
-    struct RigidMode
-    {
-      std::string     description;
-      Eigen::VectorXd coefficients;
-    };
+    using RigidMode = dpana::RigidMode;
 
     /**
      * A concentrated force as applied: the requested point, the mesh vertex
@@ -109,7 +109,9 @@ namespace dpana
 
     /**
      * Declares the subsections Geometry, Material, Boundary conditions and
-     * Loads. The caller has entered the body's subsection ("Body 1").
+     * Loads, each by its own component (geometry::Geometry, Material,
+     * BoundaryConditions, Loads). The caller has entered the body's
+     * subsection ("Body 1").
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -132,15 +134,31 @@ namespace dpana
      * set_boundary_names().
      */
     dealii::Triangulation<dim> &
-    triangulation();
+    triangulation()
+    {
+      return tria;
+    }
     const dealii::Triangulation<dim> &
-    triangulation() const;
+    triangulation() const
+    {
+      return tria;
+    }
 
+    /**
+     * The boundary names of the mesh and their boundary ids.
+     */
     void
     set_boundary_names(
-      const std::map<std::string, dealii::types::boundary_id> &names);
+      const std::map<std::string, dealii::types::boundary_id> &new_names)
+    {
+      names = new_names;
+    }
+
     const std::map<std::string, dealii::types::boundary_id> &
-    boundary_names() const;
+    boundary_names() const
+    {
+      return names;
+    }
 
     /**
      * A one-line description of the geometry (for the log).
@@ -148,16 +166,35 @@ namespace dpana
     std::string
     geometry_description() const;
 
+    /**
+     * The components of the body (its material, kinematic conditions and
+     * loads), for programs that set them up themselves, and its name.
+     */
     Material &
-    material();
+    material()
+    {
+      return material_;
+    }
     const Material &
-    material() const;
+    material() const
+    {
+      return material_;
+    }
     BoundaryConditions<dim> &
-    boundary_conditions();
+    boundary_conditions()
+    {
+      return bcs;
+    }
     Loads<dim> &
-    loads();
+    loads()
+    {
+      return loads_;
+    }
     const std::string &
-    name() const;
+    name() const
+    {
+      return name_;
+    }
 
     /**
      * Distributes the degrees of freedom, builds the constraints of the
@@ -214,35 +251,65 @@ namespace dpana
     // --- Results and internal objects -------------------------------------
 
     const dealii::DoFHandler<dim> &
-    dof_handler() const;
+    dof_handler() const
+    {
+      return dof_handler_;
+    }
     const dealii::Mapping<dim> &
-    mapping() const;
+    mapping() const
+    {
+      return mapping_;
+    }
     const dealii::FiniteElement<dim> &
-    fe() const;
+    fe() const
+    {
+      return fe_;
+    }
     const dealii::AffineConstraints<double> &
-    constraints() const;
+    constraints() const
+    {
+      return constraints_;
+    }
     const dealii::SparseMatrix<double> &
-    system_matrix() const;
+    system_matrix() const
+    {
+      return matrix;
+    }
     const dealii::Vector<double> &
-    system_rhs() const;
+    system_rhs() const
+    {
+      return rhs;
+    }
     const dealii::Vector<double> &
-    solution() const;
+    solution() const
+    {
+      return u;
+    }
     const linear_algebra::SparseCholesky &
-    factorization() const;
+    factorization() const
+    {
+      return cholesky;
+    }
 
     /**
      * Number of right-hand sides per CHOLMOD call in blocked solves with
      * the factorisation (parameter "Linear solver / Block size").
      */
     void
-    set_solver_block_size(const unsigned int block_size);
+    set_solver_block_size(const unsigned int block_size)
+    {
+      cholesky.set_block_size(block_size);
+    }
 
     /**
      * The degrees of freedom of every vertex of the mesh: dofs[v][c] is the
      * c-th displacement component at vertex v (invalid for unused vertices).
      */
     const std::vector<std::array<dealii::types::global_dof_index, dim>> &
-    vertex_dofs() const;
+    vertex_dofs() const
+    {
+      return dofs_of_vertex;
+    }
 
     /**
      * The vertices of the faces of a boundary id.
@@ -256,9 +323,15 @@ namespace dpana
      * scaled so that the largest nodal displacement of a rotation is 1.
      */
     const Eigen::MatrixXd &
-    rigid_mode_vectors() const;
+    rigid_mode_vectors() const
+    {
+      return rigid_modes.vectors();
+    }
     const std::vector<std::string> &
-    rigid_mode_names() const;
+    rigid_mode_names() const
+    {
+      return rigid_modes.names();
+    }
 
     /**
      * An orthonormal basis (in the coefficients of rigid_mode_vectors()) of
@@ -266,28 +339,43 @@ namespace dpana
      * a description ("x", "rotation", "rotation about (1, 2)"...).
      */
     const std::vector<RigidMode> &
-    free_rigid_modes() const;
+    free_rigid_modes() const
+    {
+      return free_modes;
+    }
 
     const std::vector<AppliedConcentratedForce> &
-    applied_concentrated_forces() const;
+    applied_concentrated_forces() const
+    {
+      return concentrated;
+    }
 
     /**
      * Stress tensor of each active cell (index = active cell index).
      */
     const std::vector<dealii::SymmetricTensor<2, dim>> &
-    cell_stress() const;
+    cell_stress() const
+    {
+      return stress;
+    }
 
     /**
      * sigma_zz of each cell in 2D (zero in plane stress), empty in 3D.
      */
     const std::vector<double> &
-    cell_out_of_plane_stress() const;
+    cell_out_of_plane_stress() const
+    {
+      return stress_zz;
+    }
 
     /**
      * Von Mises stress of each cell, sqrt(3 J2) of the full 3D stress.
      */
     const std::vector<double> &
-    cell_von_mises() const;
+    cell_von_mises() const
+    {
+      return von_mises;
+    }
 
     /**
      * For every named boundary that carries a kinematic condition, the
@@ -298,14 +386,20 @@ namespace dpana
      * applied_load_resultant().
      */
     const std::map<std::string, dealii::Tensor<1, dim>> &
-    reactions() const;
+    reactions() const
+    {
+      return reaction;
+    }
 
     /**
      * The resultant of all applied loads (body force, tractions, pressures,
      * concentrated forces).
      */
     dealii::Tensor<1, dim>
-    applied_load_resultant() const;
+    applied_load_resultant() const
+    {
+      return applied_resultant;
+    }
 
     /**
      * Largest nodal displacement magnitude (mm).
@@ -314,6 +408,11 @@ namespace dpana
     max_displacement() const;
 
   private:
+    // The conditions acting at one supported vertex: (boundary, direction
+    // of the support force).
+    using SupportDirections =
+      std::vector<std::pair<std::string, dealii::Tensor<1, dim>>>;
+
     std::string name_;
 
     std::unique_ptr<geometry::Geometry<dim>>          geometry;
@@ -336,31 +435,48 @@ namespace dpana
     dealii::Vector<double>            u;
     linear_algebra::SparseCholesky    cholesky;
 
-    Eigen::MatrixXd                       rigid_modes;
-    std::vector<std::string>              rigid_names;
+    RigidModes<dim>                       rigid_modes;
     std::vector<RigidMode>                free_modes;
     std::vector<AppliedConcentratedForce> concentrated;
+    // The mesh vertex of each of the concentrated forces.
+    std::vector<unsigned int> concentrated_vertex;
 
     std::vector<dealii::SymmetricTensor<2, dim>>  stress;
     std::vector<double>                           stress_zz;
     std::vector<double>                           von_mises;
     std::map<std::string, dealii::Tensor<1, dim>> reaction;
-    // For every supported vertex, the conditions acting there: (boundary,
-    // direction of the support force).
-    std::map<unsigned int,
-             std::vector<std::pair<std::string, dealii::Tensor<1, dim>>>>
-                              support_directions;
-    std::vector<unsigned int> component_of_dof;
-    dealii::Tensor<1, dim>    applied_resultant;
+    // For every supported vertex, the conditions acting there.
+    std::map<unsigned int, SupportDirections> support_directions;
+    dealii::Tensor<1, dim>                    applied_resultant;
+
+    // --- Set-up (body.cc) ---------------------------------------------------
 
     dealii::types::boundary_id
     resolve(const std::string &boundary, const std::string &parameter) const;
     void
-    make_constraints();
+    check_boundary_names() const;
     void
-    find_free_rigid_modes();
+    number_vertex_dofs();
     void
     locate_concentrated_forces();
+
+    // --- Kinematic conditions (constraints.cc) ------------------------------
+
+    void
+    make_constraints();
+    void
+    constrain_components(const dealii::types::boundary_id id,
+                         const std::string               &boundary,
+                         const std::vector<bool>         &components,
+                         const dealii::Function<dim>     *displacement);
+    std::map<unsigned int, SupportDirections>
+    symmetry_planes_at_vertices() const;
+    void
+    constrain_symmetry_at_vertex(const unsigned int       v,
+                                 const SupportDirections &planes);
+
+    // --- Assembly (assembly.cc) ---------------------------------------------
+
     // The quadrature rules and the FEValues objects of the assembly of
     // one cell (shared by assemble() and the reactions of postprocess()).
     struct CellValues
@@ -378,6 +494,20 @@ namespace dpana
       CellValues                                                   &values,
       dealii::FullMatrix<double>                                   &cell_matrix,
       dealii::Vector<double> &cell_rhs) const;
+    void
+    assemble_boundary_loads(
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      dealii::FEFaceValues<dim> &fe_face_values,
+      dealii::Vector<double>    &cell_rhs) const;
+    void
+    add_concentrated_forces();
+
+    // --- Postprocessing (postprocessing.cc) ---------------------------------
+
+    dealii::Vector<double>
+    nodal_residual();
+    void
+    split_reactions(const dealii::Vector<double> &residual);
   };
 } // namespace dpana
 

@@ -6,8 +6,6 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/point.h>
-#include <deal.II/base/tensor.h>
 
 #include <memory>
 #include <string>
@@ -57,6 +55,10 @@ namespace dpana
     std::vector<Symmetry>   symmetry;
     std::vector<Prescribed> prescribed;
 
+    /**
+     * Declares the entries Fixed, Symmetry and Prescribed displacement of
+     * the subsection "Boundary conditions" (the caller has entered it).
+     */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -71,61 +73,6 @@ namespace dpana
     /**
      * All boundary names used, with the parameter that used them.
      */
-    std::vector<std::pair<std::string, std::string>>
-    used_boundaries() const;
-  };
-
-
-
-  /**
-   * The loads of a body (subsection "Loads"):
-   *
-   * - Pressure (MPa) on named boundaries, positive = compressive, i.e. the
-   *   traction is -p n with n the outward unit normal:
-   *   `set Pressure = top: 50; right: 100`;
-   * - Traction (MPa), a constant vector per named boundary:
-   *   `set Traction = top: 0, -50`;
-   * - Concentrated forces (N in 3D, N/mm of thickness in 2D) at the mesh
-   *   vertex nearest to a given point: `set Concentrated forces = 0, 80: 0,
-   *   -200000`;
-   * - Body force (N/mm^3), constant: `set Body force = 0, -7.85e-5`.
-   *
-   * A program can also set a body force given by a Function.
-   */
-  template <int dim>
-  struct Loads
-  {
-    struct Pressure
-    {
-      std::string boundary;
-      double      pressure;
-      std::string parameter;
-    };
-
-    struct Traction
-    {
-      std::string            boundary;
-      dealii::Tensor<1, dim> traction;
-      std::string            parameter;
-    };
-
-    struct ConcentratedForce
-    {
-      dealii::Point<dim>     point;
-      dealii::Tensor<1, dim> force;
-    };
-
-    std::vector<Pressure>                        pressure;
-    std::vector<Traction>                        traction;
-    std::vector<ConcentratedForce>               concentrated_forces;
-    std::shared_ptr<const dealii::Function<dim>> body_force;
-
-    static void
-    declare_parameters(dealii::ParameterHandler &prm);
-
-    void
-    parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
-
     std::vector<std::pair<std::string, std::string>>
     used_boundaries() const;
   };

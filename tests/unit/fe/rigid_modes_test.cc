@@ -17,6 +17,7 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "mesh_test_tools.h"
 #include <gtest/gtest.h>
@@ -199,4 +200,54 @@ TEST(RigidModes, RotationAboutAPoint2D)
   ASSERT_EQ(modes.size(), 2u);
   EXPECT_EQ(modes[0], "x");
   EXPECT_EQ(modes[1].substr(0, 18), "rotation about (0,");
+}
+
+
+
+// The rigid motions on their own, from the vertex dofs of a body without
+// conditions: the translations are unit vectors, the largest nodal
+// displacement of the rotation is 1, all motions are free without
+// constraints, and a vertex held in x and y leaves the rotation about that
+// vertex.
+TEST(RigidModes, NodalVectorsAndAPinnedVertex2D)
+{
+  dpana::Body<2> body;
+  make_body(body);
+  body.setup();
+  const dpana::RigidModes<2> rigid(body.triangulation(),
+                                   body.vertex_dofs(),
+                                   body.dof_handler().n_dofs());
+  EXPECT_EQ(rigid.names(), (std::vector<std::string>{"x", "y", "rotation"}));
+
+  const auto &R       = rigid.vectors();
+  double      largest = 0;
+  for (const auto &d : body.vertex_dofs())
+    {
+      EXPECT_EQ(R(d[0], 0), 1.0);
+      EXPECT_EQ(R(d[1], 0), 0.0);
+      EXPECT_EQ(R(d[0], 1), 0.0);
+      EXPECT_EQ(R(d[1], 1), 1.0);
+      largest = std::max(largest, std::hypot(R(d[0], 2), R(d[1], 2)));
+    }
+  EXPECT_NEAR(largest, 1.0, 1e-14);
+
+  const auto all = rigid.free_modes(AffineConstraints<double>());
+  ASSERT_EQ(all.size(), 3u);
+  for (unsigned int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(all[k].description, rigid.names()[k]);
+      EXPECT_EQ(all[k].coefficients, Eigen::VectorXd::Unit(3, k));
+    }
+
+  AffineConstraints<double> pinned;
+  const auto               &vertices = body.triangulation().get_vertices();
+  for (unsigned int v = 0; v < vertices.size(); ++v)
+    if (vertices[v].distance(Point<2>(2, 1)) < 1e-12)
+      for (const auto dof : body.vertex_dofs()[v])
+        pinned.add_line(dof);
+  pinned.close();
+  ASSERT_EQ(pinned.n_constraints(), 2u);
+  const auto modes = rigid.free_modes(pinned);
+  ASSERT_EQ(modes.size(), 1u);
+  EXPECT_EQ(modes[0].description, "rotation about (2, 1)");
 }

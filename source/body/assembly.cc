@@ -1,0 +1,203 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+//
+// The assembly of the stiffness matrix and the load vector of a body.
+
+#include <dpana/body/body.h>
+
+namespace dpana
+{
+  // @sect3{The cell terms}
+
+  // The local stiffness matrix and load vector of one cell, without
+  // constraints:
+  //   K_ij = \int lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j),
+  //   f_i  = \int phi_i . b + \int_{faces with loads} phi_i . t,
+  // with t = -p n on a pressure boundary.
+  template <int dim>
+  Body<dim>::CellValues::CellValues(const dealii::Mapping<dim>       &mapping,
+                                    const dealii::FiniteElement<dim> &fe)
+    : quadrature(2)
+    , face_quadrature(2)
+    , fe_values(mapping,
+                fe,
+                quadrature,
+                dealii::update_values | dealii::update_gradients |
+                  dealii::update_quadrature_points | dealii::update_JxW_values)
+    , fe_face_values(mapping,
+                     fe,
+                     face_quadrature,
+                     dealii::update_values | dealii::update_normal_vectors |
+                       dealii::update_JxW_values)
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::assemble_cell(
+    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+    CellValues                                                   &values,
+    dealii::FullMatrix<double>                                   &cell_matrix,
+    dealii::Vector<double> &cell_rhs) const
+  {
+    auto                                    &fe_values = values.fe_values;
+    const dealii::FEValuesExtractors::Vector displacement(0);
+    const unsigned int                       n      = fe_.n_dofs_per_cell();
+    const double                             lambda = material_.lambda(dim);
+    const double                             mu     = material_.mu();
+
+    cell_matrix = 0;
+    cell_rhs    = 0;
+    fe_values.reinit(cell);
+
+    std::vector<dealii::SymmetricTensor<2, dim>> eps(n);
+    std::vector<double>                          div(n);
+    dealii::Vector<double>                       b(dim);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            div[i] = dealii::trace(eps[i]);
+          }
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) +=
+              (lambda * div[i] * div[j] + 2.0 * mu * (eps[i] * eps[j])) * JxW;
+        if (loads_.body_force)
+          {
+            loads_.body_force->vector_value(fe_values.quadrature_point(q), b);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const unsigned int c = fe_.system_to_component_index(i).first;
+                cell_rhs(i) += fe_values.shape_value(i, q) * b[c] * JxW;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+
+    if (!loads_.pressure.empty() || !loads_.traction.empty())
+      assemble_boundary_loads(cell, values.fe_face_values, cell_rhs);
+  }
+
+
+
+  // The pressures and tractions of all load entries on the boundary of a
+  // face add up to one traction t - p n.
+  template <int dim>
+  void
+  Body<dim>::assemble_boundary_loads(
+    const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+    dealii::FEFaceValues<dim> &fe_face_values,
+    dealii::Vector<double>    &cell_rhs) const
+  {
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        {
+          const auto             id     = cell->face(f)->boundary_id();
+          double                 p      = 0;
+          bool                   loaded = false;
+          dealii::Tensor<1, dim> t;
+          for (const auto &pl : loads_.pressure)
+            if (names.at(pl.boundary) == id)
+              {
+                p += pl.pressure;
+                loaded = true;
+              }
+          for (const auto &tl : loads_.traction)
+            if (names.at(tl.boundary) == id)
+              {
+                t += tl.traction;
+                loaded = true;
+              }
+          if (!loaded)
+            continue;
+          fe_face_values.reinit(cell, f);
+          for (const unsigned int q : fe_face_values.quadrature_point_indices())
+            {
+              const auto traction = t - p * fe_face_values.normal_vector(q);
+              for (unsigned int i = 0; i < fe_.n_dofs_per_cell(); ++i)
+                {
+                  const unsigned int c = fe_.system_to_component_index(i).first;
+                  cell_rhs(i) += fe_face_values.shape_value(i, q) *
+                                 traction[c] * fe_face_values.JxW(q);
+                }
+            }
+        }
+  }
+
+
+
+  // @sect3{The global system}
+
+  template <int dim>
+  void
+  Body<dim>::assemble()
+  {
+    matrix = 0;
+    rhs    = 0;
+    CellValues values(mapping_, fe_);
+
+    const unsigned int                           n = fe_.n_dofs_per_cell();
+    dealii::FullMatrix<double>                   cell_matrix(n, n);
+    dealii::Vector<double>                       cell_rhs(n);
+    std::vector<dealii::types::global_dof_index> local(n);
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        assemble_cell(cell, values, cell_matrix, cell_rhs);
+        cell->get_dof_indices(local);
+        constraints_.distribute_local_to_global(
+          cell_matrix, cell_rhs, local, matrix, rhs);
+      }
+    add_concentrated_forces();
+  }
+
+
+
+  // Concentrated forces at vertices; a force on a constrained value is
+  // taken by the support (or passed on to the values it depends on).
+  template <int dim>
+  void
+  Body<dim>::add_concentrated_forces()
+  {
+    for (unsigned int k = 0; k < concentrated.size(); ++k)
+      {
+        dealii::Vector<double>                       force(dim);
+        std::vector<dealii::types::global_dof_index> dofs(dim);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            force[c] = concentrated[k].force[c];
+            dofs[c]  = dofs_of_vertex[concentrated_vertex[k]][c];
+          }
+        constraints_.distribute_local_to_global(force, dofs, rhs);
+      }
+  }
+
+
+
+  // The functions called from the other files of the class.
+  template Body<2>::CellValues::CellValues(const dealii::Mapping<2> &,
+                                           const dealii::FiniteElement<2> &);
+  template Body<3>::CellValues::CellValues(const dealii::Mapping<3> &,
+                                           const dealii::FiniteElement<3> &);
+  template void
+  Body<2>::assemble_cell(const dealii::DoFHandler<2>::active_cell_iterator &,
+                         CellValues &,
+                         dealii::FullMatrix<double> &,
+                         dealii::Vector<double> &) const;
+  template void
+  Body<3>::assemble_cell(const dealii::DoFHandler<3>::active_cell_iterator &,
+                         CellValues &,
+                         dealii::FullMatrix<double> &,
+                         dealii::Vector<double> &) const;
+  template void
+  Body<2>::assemble();
+  template void
+  Body<3>::assemble();
+} // namespace dpana
