@@ -5,6 +5,7 @@
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/io/fclib.h>
 #include <dpana/output/contact_output.h>
+#include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
 #include <dpana/parameters/list_syntax.h>
 #include <dpana/scene/scene.h>
@@ -338,42 +339,39 @@ namespace dpana
 
     // @sect3{Phase 6: output}
     //
-    // The output directory is created only now, when every check of the
-    // input has passed and the answer exists; if writing fails, a directory
-    // this run created is removed again, so that a failed run leaves no
-    // output behind.
+    // The results are written into a staging directory that replaces the
+    // output directory only when everything is written
+    // (output::OutputDirectory): afterwards the directory holds exactly this
+    // run's files, and a run that fails leaves nothing behind and the
+    // previous results intact.
     template <int dim>
     void
     Scene<dim>::write_output()
     {
-      namespace fs = std::filesystem;
-      const fs::path directory(output_parameters.directory);
-      const bool     existed = fs::exists(directory);
-      try
-        {
-          {
-            const auto phase =
-              phase_log.phase("output",
-                              "writing output to " + directory.string());
-            fs::create_directories(directory);
-            std::ofstream(directory / "parameters.prm") << parameters_prm;
-            std::ofstream(directory / "parameters.json") << parameters_json;
-            if (output_parameters.write_vtu)
-              output::write_bodies(bodies, directory.string());
-            if (with_contact)
-              write_contact_output(directory.string());
-          }
-          write_summary(directory.string());
-        }
-      catch (...)
-        {
-          if (!existed)
-            {
-              std::error_code ec;
-              fs::remove_all(directory, ec);
-            }
-          throw;
-        }
+      output::OutputDirectory directory(output_parameters.directory);
+      write_output(directory);
+    }
+
+
+
+    template <int dim>
+    void
+    Scene<dim>::write_output(output::OutputDirectory &directory)
+    {
+      const std::string staging = directory.staging();
+      {
+        const auto phase =
+          phase_log.phase("output",
+                          "writing output to " + output_parameters.directory);
+        std::ofstream(staging + "/parameters.prm") << parameters_prm;
+        std::ofstream(staging + "/parameters.json") << parameters_json;
+        if (output_parameters.write_vtu)
+          output::write_bodies(bodies, staging);
+        if (with_contact)
+          write_contact_output(staging);
+      }
+      write_summary(staging);
+      directory.commit();
     }
 
 
@@ -435,10 +433,16 @@ namespace dpana
 
 
 
+    // A run checks first that it can write its output directory, so that a
+    // mistyped or unwritable path does not throw away a long computation.
     template <int dim>
     void
     Scene<dim>::run(const bool output)
     {
+      std::unique_ptr<output::OutputDirectory> directory;
+      if (output)
+        directory = std::make_unique<output::OutputDirectory>(
+          output_parameters.directory);
       assemble();
       if (with_contact)
         {
@@ -448,7 +452,7 @@ namespace dpana
       solve();
       recover();
       if (output)
-        write_output();
+        write_output(*directory);
       if (quiet)
         return;
       if (with_contact)

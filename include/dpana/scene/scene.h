@@ -12,6 +12,7 @@
 #include <dpana/contact_surface/contact_surface.h>
 #include <dpana/contact_surface/parameters.h>
 #include <dpana/output/output.h>
+#include <dpana/output/output_directory.h>
 #include <dpana/scene/contact_parameters.h>
 #include <dpana/scene/contact_summary.h>
 #include <dpana/scene/references.h>
@@ -49,7 +50,8 @@ namespace dpana
      * 5. recover(): u = K^-1 (f + V r) and the stresses of every body, the
      *    half width, zones and comparisons with the references;
      * 6. write_output(): VTU of the bodies and of the contact surface,
-     *    contact.csv, summary.json, the plot.
+     *    contact.csv, summary.json, the plot, written all at once
+     *    (output::OutputDirectory).
      */
     template <int dim>
     class Scene
@@ -203,6 +205,8 @@ namespace dpana
 
       void
       make_surfaces();
+      void
+      write_output(output::OutputDirectory &directory);
       void
       write_contact_output(const std::string &directory);
       void
