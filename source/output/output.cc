@@ -20,10 +20,12 @@ namespace dpana
         "Directory",
         "output",
         Anything(),
-        "Directory of the results, relative to the working directory. It is "
-        "created when the results are written; files of an earlier run in "
-        "it are overwritten. A run that fails removes it again if it "
-        "created it.");
+        "Directory of the results, relative to the working directory. The "
+        "run checks first that it can write there; its files are written "
+        "into a staging directory that replaces this one at the end, so "
+        "that it holds exactly this run's files; a run that fails leaves "
+        "the previous results intact. A directory holding files dpana did "
+        "not write is refused.");
       prm.declare_entry("Write VTU",
                         "true",
                         Bool(),
