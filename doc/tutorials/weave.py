@@ -89,9 +89,21 @@ def comment_fraction(source):
     return sum(is_comment(l) for l in lines) / max(1, len(lines))
 
 
+BANNER = re.compile(r"\s*//\s*(-{5,}|dpana: .*)\s*$")
+
+
+def without_banner(source):
+    """The program without the project's file banner (dashed lines and the
+    one-line description of dpana) at its top."""
+    lines = source.splitlines()
+    while lines and (BANNER.fullmatch(lines[0]) or not lines[0].strip()):
+        lines.pop(0)
+    return "\n".join(lines) + "\n"
+
+
 def page(step):
     folder = os.path.join(HERE, step)
-    source = read(os.path.join(folder, step + ".cc"))
+    source = without_banner(read(os.path.join(folder, step + ".cc")))
     results = os.path.join(folder, "results.md")
     return "\n\n".join(
         [
