@@ -62,7 +62,7 @@ def plot_candidates(out):
                 label="half width %g mm" % float(w))
     ax.set_xlabel("s (mm)")
     ax.set_ylabel("N (MPa)")
-    ax.set_title("Line load on the block: the candidate surface")
+    ax.set_title("Line load on the layer 40 x 20 mm: candidate surfaces")
     ax.grid(True, alpha=0.3)
     ax.legend()
     fig.tight_layout()

@@ -158,6 +158,10 @@ namespace Step3
             const std::string             &method,
             const Eigen::VectorXd         &reference_N)
   {
+    // The solver object keeps references to M and G and precomputes the
+    // inverse diagonal of M (and, for PGS, the augmented matrix of the
+    // equality row); its default options stop at a relative change of
+    // 1e-12 and allow 10000 sweeps or steps.
     const NormalProblem           normal = normal_part(problem);
     contact::InnerOptions         options;
     contact::NormalLcp            lcp(normal.M, normal.G, options);
@@ -167,6 +171,9 @@ namespace Step3
     unsigned int                  repetitions = 0;
     const auto                    start = std::chrono::steady_clock::now();
     std::chrono::duration<double> elapsed{};
+    // Every repetition starts cold, from N = 0 and alpha = 0, so that all
+    // of them do the same work; a warm start from the previous answer would
+    // make the later repetitions trivial.
     do
       {
         N     = Eigen::VectorXd::Zero(n);
@@ -274,6 +281,8 @@ namespace Step3
               << std::setw(12) << "iterations" << std::setw(14) << "time (ms)"
               << std::setw(14) << "residual" << std::setw(16)
               << "max|N/N_ref-1|" << '\n';
+    // The meshes have k x k cells, hence k/2 contact elements of two edges
+    // each on the base.
     for (const unsigned int k : {32u, 64u, 128u, 256u})
       {
         set_entry(prm,
@@ -282,6 +291,8 @@ namespace Step3
                   std::to_string(k) + ", " + std::to_string(k));
         const auto  block   = condensed_scene(prm);
         const auto &problem = block->problem();
+        // The condensed problem must be the one described above: no
+        // friction, and one equality row for the free vertical translation.
         AssertThrow(problem.mu.isZero(0) && problem.n_equalities() == 1,
                     ExcMessage("The block must be frictionless and held in y "
                                "by one equality row."));
@@ -310,6 +321,9 @@ namespace Step3
             lcp_runs.push_back(run);
           }
 
+        // The same problem through the driver of the contact layer, as a
+        // scene solves it: its tractions must be those of the active set
+        // method on the normal LCP, with T = 0 on every element.
         contact::SolverOptions options;
         options.type = contact::SolverType::splitting_active_set;
         const contact::SolverResult full = contact::solve(problem, options);
@@ -322,6 +336,7 @@ namespace Step3
                     ExcMessage("contact::solve() and the normal LCP differ."));
       }
 
+    // One row per mesh and method, for the figure.
     std::ofstream csv(output_directory + "/lcp_solvers.csv");
     csv << "n,method,iterations,seconds,residual,error\n";
     for (const auto &run : lcp_runs)
@@ -369,6 +384,9 @@ namespace Step3
               {"Body 1", "Loads"},
               "Concentrated forces",
               "0, 20: 0, -2000");
+    // A half width of 0 means the whole boundary named in `Boundary 1`,
+    // here the base from s = 0 to 40 mm; the candidate centre is the origin,
+    // on the plane of symmetry.
     const std::vector<double> half_widths = {0, 30, 25, 20, 10};
 
     std::ofstream csv(output_directory + "/candidates.csv");
@@ -383,6 +401,11 @@ namespace Step3
     for (const double w : half_widths)
       {
         set_entry(prm, {"Contact"}, "Candidate half width", std::to_string(w));
+        // This time the scene also solves the problem (by its default
+        // solver, the D-PANA splitting with active sets) and recovers the
+        // displacements, which gives the summary of the contact zone: the
+        // half width and the warning for a candidate surface that is too
+        // small.
         auto block = condensed_scene(prm);
         block->solve();
         block->recover();

@@ -155,6 +155,8 @@ namespace Step4
     AssertThrow(summary.result.converged,
                 ExcMessage("The contact solver did not converge."));
 
+    // The resultant of the normal tractions: each element carries the
+    // force -N_j times its area (its length, per mm of thickness).
     double resultant = 0;
     for (unsigned int j = 0; j < block.surface(0).n_elements(); ++j)
       resultant -= block.normal_traction(j) * block.surface(0).element(j).area;
@@ -170,12 +172,13 @@ namespace Step4
 
   // @sect3{Stick, slip and separation}
   //
-  // Without friction the block would slide outwards on its base and keep
-  // it all in contact with N = -50 MPa (step 3). Friction resists the
-  // lateral expansion of the base, the normal traction concentrates
-  // towards the middle, and the base separates near its outer edge: the
-  // contact recedes. Along the base three zones appear: near the plane of
-  // symmetry the base sticks (|T| < -mu N, u_T = 0), further out it slips
+  // Without friction the base would slide towards the plane of symmetry,
+  // squeezed by the side pressures, and stay in contact with N = -50 MPa
+  // (step 3). Friction resists this contraction (T > 0 here, along +x on
+  // the block), the normal traction concentrates towards the middle, and
+  // the base separates near its outer edge: the contact recedes. Along the base
+  // three zones appear: near the plane of symmetry the base sticks (|T| < -mu
+  // N, u_T = 0), further out it slips
   // (|T| = -mu N, u_T opposite to T), and at the edge it has left the
   // foundation (N = 0). The scene classifies every element and groups them
   // into zones; the program prints them, writes the tractions and the
@@ -201,6 +204,10 @@ namespace Step4
     const double  mu      = block.problem().mu(0);
     std::ofstream csv(output_directory + "/tractions.csv");
     csv << "s,N,T,status\n";
+    // The elements in order of their distance s from the plane of symmetry,
+    // with the status the solver gave them; the slack of 5e-7 MPa in the
+    // inequality allows for the round-off of the slip elements, which lie
+    // on the bound.
     for (const unsigned int j : surface.sorted_elements())
       {
         const double N = block.normal_traction(j);
@@ -251,6 +258,9 @@ namespace Step4
               << std::setw(10) << "inner" << std::setw(13) << "residual"
               << std::setw(12) << "time (ms)" << std::setw(16)
               << "max|r - r_ref|" << '\n';
+    // The solvers share the problem and the default options (tolerance
+    // 1e-10, at most 1000 outer iterations); only the type changes. Each
+    // starts from scratch, without the scene's answer as a start.
     for (const auto type : {contact::SolverType::splitting_active_set,
                             contact::SolverType::splitting_pgs,
                             contact::SolverType::nsgs,
@@ -267,6 +277,9 @@ namespace Step4
                   << std::setprecision(4) << 1e3 * run.seconds << std::setw(16)
                   << std::setprecision(3) << run.difference
                   << std::setprecision(6) << '\n';
+        // The history holds the shared residual after every outer
+        // iteration (Alart-Curnier also that of its starting point), the
+        // curve of the figure.
         for (unsigned int k = 0; k < result.residual_history.size(); ++k)
           history << contact::to_string(type) << ',' << k + 1 << ','
                   << result.residual_history[k] << '\n';
@@ -316,6 +329,8 @@ namespace Step4
         prm.leave_subsection();
         prm.leave_subsection();
         prm.leave_subsection();
+        // A new scene for every mesh: a scene is set up once from its
+        // parameters and then runs its phases.
         scene::Scene<2> fine;
         fine.set_quiet(true);
         fine.parse_parameters(prm, 1, true);
