@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------------
-// dpana tutorial step 3: frictionless contact (Signorini).
+// dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
 // @sect3{Include files}

@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------------
-// dpana tutorial step 4: Coulomb friction and the D-PANA splitting.
+// dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
 // @sect3{Include files}
