@@ -123,6 +123,10 @@ namespace Step5
     run();
 
   private:
+    // The parameters of the scene, read once and changed between the
+    // meshes; the Hertz solution and the two numbers of the file that the
+    // checks need: the radius of the cylinder and the load of the half
+    // model.
     ParameterHandler prm;
     HertzSolution    hertz;
     double           radius, half_load;
@@ -147,6 +151,9 @@ namespace Step5
     scene::declare_parameters(prm, {2, 1, true});
     parameters::parse_file(prm, prm_file);
 
+    // The material of the cylinder. The reference formulation's scenes are
+    // in plane strain, the material's default, which is why Hertz's
+    // compliance carries the factor 1 - nu^2.
     prm.enter_subsection("Body 1");
     prm.enter_subsection("Material");
     const double E  = prm.get_double("Young's modulus");
@@ -154,6 +161,9 @@ namespace Step5
     prm.leave_subsection();
     prm.leave_subsection();
 
+    // The load and the radius of the Hertz comparison. The file gives the
+    // load of the whole cylinder, 200 kN/mm; the half model carries half of
+    // it, the check of the resultant below uses that half.
     prm.enter_subsection("Contact");
     prm.enter_subsection("Reference");
     const double P = prm.get_double("Hertz load");
@@ -191,7 +201,11 @@ namespace Step5
     const auto &surface = scene.surface(0);
     const auto &D       = scene.problem().D;
     const auto &D_hat   = scene.condenser(0).load_term();
-    const auto  circle  = [this](const double x) {
+    // The primitive of the circle's height above the plane,
+    // $\int_0^x \left(R - \sqrt{R^2 - \xi^2}\right) d\xi$, for the exact mean
+    // gap of the circle over an element; the parabola's mean over
+    // $[x_0, x_1]$ is $(x_1^3 - x_0^3) / (6 R (x_1 - x_0))$.
+    const auto circle = [this](const double x) {
       return radius * x - 0.5 * (x * std::sqrt(radius * radius - x * x) +
                                  radius * radius * std::asin(x / radius));
     };
@@ -200,6 +214,9 @@ namespace Step5
               << "      D_N\n";
     for (unsigned int j = 0; j < surface.n_elements(); ++j)
       {
+        // The plane passes through the first contact point, the origin, so
+        // the gap at a vertex is its y coordinate; the projected length of a
+        // face along n = (0,-1) is its extent in x.
         const auto &e = surface.element(j);
         double      g = 0;
         for (const unsigned int f : e.faces)
@@ -212,6 +229,8 @@ namespace Step5
         AssertThrow(std::abs(D(2 * j) - (D_hat(2 * j) - g)) <=
                       1e-9 * (1 + std::abs(D(2 * j))),
                     ExcMessage("D_N is not s_o - g"));
+        // Print the first six elements and every fifth after them; the
+        // checks above ran on every element.
         if (j >= 6 && j % 5 != 0)
           continue;
         const double x0 = e.s_min, x1 = e.s_max;
@@ -241,6 +260,10 @@ namespace Step5
   HertzConvergence::solve_on(const unsigned int contact_refinements,
                              const bool         explain)
   {
+    // The entry lives in the subsection named after the shape of the
+    // geometry, as every shape declares and reads its own entries. The
+    // other entries, among them the Contact refinement radius of 14 mm
+    // (larger than the contact zone on every mesh), stay as in the file.
     prm.enter_subsection("Body 1");
     prm.enter_subsection("Geometry");
     prm.enter_subsection("Quarter disc");
@@ -249,6 +272,9 @@ namespace Step5
     prm.leave_subsection();
     prm.leave_subsection();
 
+    // A new scene for every mesh: the parameters are read into its
+    // components, then all phases run. The wall time is measured around the
+    // whole of it; the phase log of the scene splits it up.
     const auto      start = std::chrono::steady_clock::now();
     scene::Scene<2> scene;
     scene.parse_parameters(prm, 1, true);
@@ -269,9 +295,15 @@ namespace Step5
                 ExcMessage("the tractions do not carry the load"));
     AssertThrow(!summary.candidate_edge_warning,
                 ExcMessage("the contact zone reaches the candidate edge"));
+    // The gaps are shown for one mesh only, the first: its few, long
+    // elements show the difference between chords and circle best.
     if (explain)
       show_initial_gaps(scene);
 
+    // What the study keeps of this mesh. The summary holds the half width,
+    // the size of the element that ends the contact zone and the maximum
+    // pressure; the tractions of every element are read from the scene, and
+    // the degrees of freedom from the body's DoFHandler.
     MeshResult r;
     r.contact_refinements = contact_refinements;
     r.n_elements          = scene.surface(0).n_elements();
@@ -332,10 +364,14 @@ namespace Step5
   void
   HertzConvergence::write_and_plot(const std::vector<MeshResult> &results) const
   {
+    // One row per mesh, with the Hertz values repeated so that the plot
+    // script needs no other input.
     std::filesystem::create_directories("output");
     std::ofstream table("output/convergence.csv");
     table << "contact_refinements,n_elements,n_dofs,h,a,a_fit,max_pressure,"
           << "seconds,hertz_a,hertz_max_pressure\n";
+    // One row per contact element and mesh: the centroid s of the element
+    // and its pressure -N.
     std::ofstream profile("output/profiles.csv");
     profile << "contact_refinements,s,pressure\n";
     for (const auto &r : results)
@@ -349,10 +385,14 @@ namespace Step5
       }
     table.close();
     profile.close();
+
+    // The files are closed before the script reads them. The plot is a
+    // convenience: without matplotlib the program warns and goes on.
+    const std::string python = "/usr/bin/python3";
     const std::string command =
-      "/usr/bin/python3 " + std::string(DPANA_STEP_DIR) + "/plot.py output";
-    if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
-      std::cerr << "warning: no plot (/usr/bin/python3 has no matplotlib)\n";
+      python + " " + std::string(DPANA_STEP_DIR) + "/plot.py output";
+    if (std::system((python + " -c 'import matplotlib' 2>/dev/null").c_str()))
+      std::cerr << "warning: no plot (" << python << " has no matplotlib)\n";
     else if (std::system(command.c_str()) != 0)
       std::cerr << "warning: no plot (" << command << " failed)\n";
   }

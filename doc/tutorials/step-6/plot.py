@@ -27,9 +27,9 @@ def rows(path):
 
 def mortar(out):
     data = rows(os.path.join(out, "mortar.csv"))
-    x_max = 3.0
+    x_max = 1.5
     fig, ax = plt.subplots(figsize=(7.0, 3.6))
-    lift = 0.02  # Body 1 drawn above Body 2, so that the cuts show
+    lift = 0.005  # Body 1 drawn above Body 2, so that the cuts show
     for kind, colour, dy in (("face1", "C0", lift), ("face2", "C1", 0.0)):
         for r in data:
             if r["kind"] != kind:
@@ -61,7 +61,7 @@ def mortar(out):
             if x <= x_max:
                 ax.axvline(x, color="C2", lw=1.0, alpha=0.5)
     ax.plot([], [], "-", color="C2", alpha=0.5, label="contact element ends")
-    ax.plot([], [], "-|", color="C0", label="Body 1 (cylinder), lifted by 0.02 mm")
+    ax.plot([], [], "-|", color="C0", label="Body 1 (cylinder), lifted by 0.005 mm")
     ax.plot([], [], "-|", color="C1", label="Body 2 (cavity)")
     ax.plot([], [], ":", color="grey", label="ends of the pieces of Body 2")
     ax.set_xlim(0, x_max)

@@ -7,7 +7,10 @@
 // As in step-5, one dpana::scene::Scene does the whole run; this program
 // reads two parameter files, changes the elastic moduli of the bodies, and
 // looks inside the contact surfaces to show how two meshes that do not
-// match are coupled.
+// match are coupled. The scene's headers bring in those of its components:
+// the bodies (dpana::Body), the contact surfaces
+// (dpana::contact_surface::ContactSurface, whose elements and quadrature
+// points this program reads), the condensers and the contact problem.
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/run.h>
 #include <dpana/scene/scene.h>
@@ -62,6 +65,9 @@ namespace Step6
         const double k1,
         const double k2)
   {
+    // The relative curvature 1/R: the flat foundation adds nothing, the
+    // cavity (R2 < 0) subtracts its curvature. It must stay positive, or
+    // the surfaces would not touch at one point first.
     const double curvature = 1 / R1 + (R2 == 0 ? 0 : 1 / R2);
     AssertThrow(P > 0 && R1 > 0 && curvature > 0 && k1 >= 0 && k2 >= 0,
                 ExcMessage("Hertz: the surfaces must be convex together"));
@@ -93,6 +99,10 @@ namespace Step6
         const std::string              &name,
         const std::string              &value = "")
   {
+    // A ParameterHandler addresses an entry by the subsections entered
+    // before it, so the path is entered, the entry set (if a value is given)
+    // and read, and the path left again: the handler is back at the top
+    // level for the next call.
     for (const auto &s : path)
       prm.enter_subsection(s);
     if (!value.empty())
@@ -118,10 +128,16 @@ namespace Step6
   RunResult
   solve(ParameterHandler &prm, scene::Scene<2> &scene)
   {
+    // The wall time covers the whole run: reading the parameters into the
+    // components, meshing, assembly, contact surface, condensation, solve
+    // and recovery.
     const auto start = std::chrono::steady_clock::now();
     scene.parse_parameters(prm, 2, true);
     scene.set_quiet(true);
     scene.run(false);
+    // A contact zone that reached the edge of the candidate surface would
+    // mean that the surface was chosen too small and the answer depends on
+    // it; the summary flags it, and the program refuses such a run.
     const auto &summary = scene.summary();
     AssertThrow(summary.result.converged,
                 ExcMessage("the contact solver did not converge"));
@@ -136,6 +152,8 @@ namespace Step6
                                               start)
                   .count(),
                 {}};
+    // The pressure profile: the tangential coordinate s of each element's
+    // centroid (measured from the first contact point) and its pressure -N.
     for (unsigned int j = 0; j < scene.surface(0).n_elements(); ++j)
       r.profile.push_back(
         {{scene.surface(0).element(j).s, -scene.normal_traction(j)}});
@@ -168,6 +186,8 @@ namespace Step6
     const auto &s2 = scene.surface(1);
     std::filesystem::create_directories("output");
     std::ofstream csv("output/mortar.csv");
+    // First the faces of Body 2 that face Body 1, whole, as the mesh made
+    // them.
     csv << "kind,element,x_from,x_to,y_from,y_to\n";
     for (const auto &face : s2.get_faces())
       csv << "face2,-1," << face.points[0][0] << ',' << face.points[1][0] << ','
@@ -176,6 +196,12 @@ namespace Step6
     std::cout << "Mortar projection (x of the pieces, mm):\n";
     for (unsigned int j = 0; j < s1.n_elements(); ++j)
       {
+        // The quadrature weights of each side add up to the projected
+        // length of the side. Both must be the element's area: Body 1's
+        // because its points are its own faces, Body 2's because its
+        // pieces cover the projection of element j exactly once, without
+        // gaps or overlaps. This is what makes the forces of the two sides
+        // balance.
         double w1 = 0, w2 = 0;
         for (const auto &p : s1.element(j).points)
           w1 += p.weight;
@@ -186,6 +212,11 @@ namespace Step6
                       std::abs(w2 - area) < 1e-12 * area,
                     ExcMessage("the two sides of element " + std::to_string(j) +
                                " do not match"));
+        // Then the faces of Body 1 grouped by element, and the pieces of
+        // Body 2: a piece is stored only as its quadrature point (the
+        // midpoint) and its weight (the projected length), so its ends are
+        // the midpoint plus and minus half the weight along x, the tangent
+        // direction of this scene.
         n_pieces += s2.element(j).points.size();
         for (const unsigned int f : s1.element(j).faces)
           {
@@ -206,6 +237,8 @@ namespace Step6
         if (j < 3)
           std::cout << "\n";
       }
+    // More pieces than faces of either body: every vertex of either surface
+    // inside the candidate zone ends a piece.
     std::cout << "  " << s1.get_faces().size() << " faces of Body 1, "
               << s2.get_faces().size() << " faces of Body 2 facing it, "
               << s1.n_elements() << " contact elements, " << n_pieces
@@ -225,24 +258,31 @@ namespace Step6
   {
     ParameterHandler prm;
     read_scene(prm, "hertz_cavity.prm");
-    const double E =
-      std::stod(entry(prm, {"Body 1", "Material"}, "Young's modulus"));
-    const double nu =
-      std::stod(entry(prm, {"Body 1", "Material"}, "Poisson's ratio"));
-    const double R1 =
-      std::stod(entry(prm, {"Contact", "Reference"}, "Radius 1"));
-    const double R2 =
-      std::stod(entry(prm, {"Contact", "Reference"}, "Radius 2"));
-    const double a_t =
-      std::stod(entry(prm, {"Contact", "Reference"}, "Table half width"));
+    // The data of the Hertz formula and of the table come from the same
+    // file as the scene, so that the comparison cannot drift from it. The
+    // two bodies have the same elastic constants, hence one compliance k.
+    const std::vector<std::string> material  = {"Body 1", "Material"};
+    const std::vector<std::string> reference = {"Contact", "Reference"};
+    const double E   = std::stod(entry(prm, material, "Young's modulus"));
+    const double nu  = std::stod(entry(prm, material, "Poisson's ratio"));
+    const double R1  = std::stod(entry(prm, reference, "Radius 1"));
+    const double R2  = std::stod(entry(prm, reference, "Radius 2"));
+    const double a_t = std::stod(entry(prm, reference, "Table half width"));
     const double N_t =
-      std::stod(entry(prm, {"Contact", "Reference"}, "Table maximum pressure"));
+      std::stod(entry(prm, reference, "Table maximum pressure"));
     const double        k = plane_strain_compliance(E, nu);
     const HertzSolution h = hertz(2e5, R1, R2, k, k);
 
+    // The scene is kept after the run: its contact surfaces hold the
+    // mortar projection that the next function shows.
     scene::Scene<2> scene;
     const RunResult r = solve(prm, scene);
     show_mortar_projection(scene);
+
+    // The comparison: the relative differences of a and N_max from Hertz
+    // and from the reference formulation's table 4.4. The half width is an
+    // element edge, so it is printed with the element size that bounds its
+    // error.
 
     std::cout << std::fixed << std::setprecision(4) << "Cylinder in a cavity ("
               << r.seconds << " s):\n"
@@ -258,6 +298,8 @@ namespace Step6
               << ", N_max " << r.max_pressure / N_t - 1 << std::noshowpos
               << std::defaultfloat << "\n";
 
+    // The traction profile for the figure: one row per contact element,
+    // with the Hertz values that the plot script turns into the ellipse.
     std::ofstream csv("output/cavity.csv");
     csv << "s,pressure,hertz_a,hertz_max_pressure\n";
     for (const auto &[s, p] : r.profile)
@@ -294,57 +336,55 @@ namespace Step6
     double worst = 0;
     for (const double ratio : {1e-3, 1.0, 1e1, 1e2, 1e3})
       {
+        // The softer body keeps E = 130 GPa, the other is made stiffer by
+        // the ratio; both keep nu = 0.2, which the file must have.
         ParameterHandler prm;
         read_scene(prm, "hertz_ratio.prm");
-        const double E = 130000, nu = 0.2;
-        const double E1 = E * std::max(1.0, ratio);
-        const double E2 = E * std::max(1.0, 1 / ratio);
-        entry(prm,
-              {"Body 1", "Material"},
-              "Young's modulus",
-              std::to_string(E1));
-        entry(prm,
-              {"Body 2", "Material"},
-              "Young's modulus",
-              std::to_string(E2));
-        AssertThrow(std::stod(
-                      entry(prm, {"Body 1", "Material"}, "Poisson's ratio")) ==
-                      nu,
+        const double                   E = 130000, nu = 0.2;
+        const double                   E1     = E * std::max(1.0, ratio);
+        const double                   E2     = E * std::max(1.0, 1 / ratio);
+        const std::vector<std::string> body_1 = {"Body 1", "Material"};
+        const std::vector<std::string> body_2 = {"Body 2", "Material"};
+        entry(prm, body_1, "Young's modulus", std::to_string(E1));
+        entry(prm, body_2, "Young's modulus", std::to_string(E2));
+        AssertThrow(std::stod(entry(prm, body_1, "Poisson's ratio")) == nu &&
+                      std::stod(entry(prm, body_2, "Poisson's ratio")) == nu,
                     ExcMessage("hertz_ratio.prm: nu must be 0.2"));
-        const HertzSolution h = hertz(2e5,
-                                      40,
-                                      0,
-                                      plane_strain_compliance(E1, nu),
-                                      plane_strain_compliance(E2, nu));
+
+        // Hertz for a flat foundation (R2 = 0 stands for 1/R2 = 0) with the
+        // compliances of both bodies, and the run.
+        const double        k1 = plane_strain_compliance(E1, nu);
+        const double        k2 = plane_strain_compliance(E2, nu);
+        const HertzSolution h  = hertz(2e5, 40, 0, k1, k2);
         scene::Scene<2>     scene;
         const RunResult     r = solve(prm, scene);
 
+        // The reference formulation's table of this ratio, if it has one.
         double a_t = 0, N_t = 0;
         for (const auto &t : tables)
           if (std::abs(t.ratio / ratio - 1) < 1e-9)
             a_t = t.a, N_t = t.max_pressure;
-        // One row; a ratio without a table gets dashes in its columns.
-        const auto tabled = [N_t](const char *format, const double x) {
-          char text[32] = "-";
-          if (N_t > 0)
-            std::snprintf(text, sizeof(text), format, x);
+
+        // One row of the table; a ratio without a table gets dashes.
+        const auto cell = [](const double x, const char *format) {
+          char text[32];
+          std::snprintf(text, sizeof(text), format, x);
           return std::string(text);
         };
-        char row[160];
-        std::snprintf(row,
-                      sizeof(row),
-                      "%8g %8.3f %8.3f %8s %8.0f %8.0f %8s %+9.4f %9s %7.2f\n",
-                      ratio,
-                      r.a,
-                      h.a,
-                      tabled("%.2f", a_t).c_str(),
-                      r.max_pressure,
-                      h.max_pressure,
-                      tabled("%.0f", N_t).c_str(),
-                      r.max_pressure / h.max_pressure - 1,
-                      tabled("%+.4f", r.max_pressure / N_t - 1).c_str(),
-                      r.seconds);
-        std::cout << row;
+        const auto tabled = [&cell, N_t](const double x, const char *format) {
+          return N_t > 0 ? cell(x, format) : std::string("-");
+        };
+        std::cout << cell(ratio, "%8g") << cell(r.a, " %8.3f")
+                  << cell(h.a, " %8.3f") << std::setw(9) << tabled(a_t, "%.2f")
+                  << cell(r.max_pressure, " %8.0f")
+                  << cell(h.max_pressure, " %8.0f") << std::setw(9)
+                  << tabled(N_t, "%.0f")
+                  << cell(r.max_pressure / h.max_pressure - 1, " %+9.4f")
+                  << std::setw(10) << tabled(r.max_pressure / N_t - 1, "%+.4f")
+                  << cell(r.seconds, " %7.2f") << "\n";
+
+        // The largest difference from a table is the number the headline
+        // check bounds; all rows go to the CSV file of the figure.
         if (N_t > 0)
           worst = std::max(worst, std::abs(r.max_pressure / N_t - 1));
         csv << ratio << ',' << r.a << ',' << r.h << ',' << r.max_pressure << ','
@@ -353,27 +393,50 @@ namespace Step6
       }
     return worst;
   }
+
+  // @sect3{The figures}
+  //
+  // The plot script of this step's folder reads the three CSV files of
+  // output/ and draws the mortar projection, the pressure in the cavity and
+  // the stiffness ratios, with the Python of the system (/usr/bin/python3,
+  // where the setup script installs matplotlib). A missing matplotlib is a
+  // warning only: the numbers, and the checks, do not depend on it.
+  void
+  plot()
+  {
+    const std::string python = "/usr/bin/python3";
+    const std::string command =
+      python + " " + std::string(DPANA_STEP_DIR) + "/plot.py output";
+    if (std::system((python + " -c 'import matplotlib' 2>/dev/null").c_str()))
+      std::cerr << "warning: no plot (" << python << " has no matplotlib)\n";
+    else if (std::system(command.c_str()) != 0)
+      std::cerr << "warning: no plot (" << command << " failed)\n";
+  }
 } // namespace Step6
 
 // @sect3{The main function}
 //
-// Both parts, the plot, and the headline checks: the maximum pressure in
-// the cavity lies within 2 % of the reference formulation's table 4.4, and
-// every tabled stiffness ratio within 3 % of its table.
+// As in deal.II's tutorials, main() runs the parts and catches and reports
+// exceptions. The headline checks: the maximum pressure in the cavity lies
+// within 2 % of the reference formulation's table 4.4, and that of every
+// tabled stiffness ratio within 3 % of its table. The bounds are those of
+// the comparison, not of the method: the tables come from coarse meshes of
+// their own, and Hertz's formula does not describe the half models exactly
+// (see the results). What the checks guard is that the library keeps giving
+// the numbers this page discusses.
 int
 main()
 {
   try
     {
-      const double      cavity = Step6::cylinder_in_cavity();
-      const double      ratios = Step6::stiffness_ratios();
-      const std::string command =
-        "/usr/bin/python3 " + std::string(DPANA_STEP_DIR) + "/plot.py output";
-      if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") !=
-          0)
-        std::cerr << "warning: no plot (/usr/bin/python3 has no matplotlib)\n";
-      else if (std::system(command.c_str()) != 0)
-        std::cerr << "warning: no plot (" << command << " failed)\n";
+      // The cavity first: it also writes the mortar projection. Then the
+      // five stiffness ratios, each a new scene read from its file.
+      const double cavity = Step6::cylinder_in_cavity();
+      const double ratios = Step6::stiffness_ratios();
+      Step6::plot();
+
+      // The headline numbers, and the checks that make the ctest fail if a
+      // change of the library moves them.
       std::cout << "\nN_max against the reference formulation: cavity "
                 << 100 * cavity << " %, largest over tables 4.1-4.3 "
                 << 100 * ratios << " %\n";
