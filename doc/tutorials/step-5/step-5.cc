@@ -402,12 +402,15 @@ namespace Step5
   // The meshes of the study: 3 to 6 refinements around the contact point,
   // contact elements from about 2 mm down to 0.24 mm (a seventh refinement,
   // 0.12 mm, takes four times as long as the sixth and changes N_max by
-  // less than 0.01 %). The first mesh also
-  // shows its initial gaps, the finest the time of each of its phases.
-  // The headline check: on the finest mesh the
-  // maximum pressure lies within 4 % of Hertz and the half width within one
-  // element size and 5 % of it, the accuracy that the half model and the
-  // piecewise constant tractions allow (see the results).
+  // less than 0.01 %). The first mesh also shows its initial gaps, the
+  // finest the time of each of its phases.
+  //
+  // The headline check: on the finest mesh the maximum pressure lies
+  // within 4 % of Hertz, and the half width within one element size plus
+  // 5 % of Hertz's. These are the accuracies that the half model and the
+  // piecewise constant tractions allow (see the results): the bounds guard
+  // the numbers this page discusses, they do not claim that dpana
+  // reproduces Hertz to them.
   void
   HertzConvergence::run()
   {
