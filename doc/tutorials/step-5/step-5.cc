@@ -1,6 +1,5 @@
-// ---------------------------------------------------------------------------
-// dpana: dual condensed frictional contact between linear elastic bodies.
-// ---------------------------------------------------------------------------
+// dpana, tutorial step 5: increasing contact, the Hertz cylinder on a
+// rigid plane.
 
 // @sect3{Include files}
 //

@@ -1,6 +1,4 @@
-// ---------------------------------------------------------------------------
-// dpana: dual condensed frictional contact between linear elastic bodies.
-// ---------------------------------------------------------------------------
+// dpana, tutorial step 6: two bodies and non-matching meshes.
 
 // @sect3{Include files}
 //
