@@ -47,41 +47,37 @@ def main(out):
     fig.savefig(os.path.join(out, "profiles.png"), dpi=110)
 
     h = [r["h"] for r in table]
-    e_a = [abs(r["a"] / a_h - 1) for r in table]
-    e_fit = [abs(r["a_fit"] / a_h - 1) for r in table]
-    e_n = [abs(r["max_pressure"] / p_h - 1) for r in table]
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    ax.loglog(h, e_a, "o-", label="|e_a|, a = edge of last element")
-    ax.loglog(h, e_fit, "s-", label="|e_a|, a from the elliptic fit")
-    ax.loglog(h, e_n, "^-", label="|e_N|, N_max")
-    n_fine = table[-1]["max_pressure"]
-    ax.loglog(h[:-1], [abs(r["max_pressure"] / n_fine - 1) for r in table[:-1]],
-              "v--", label="|N_max / N_max(finest) - 1|")
-    ax.loglog(h, [x / a_h for x in h], "k:", label="h / a")
-    ax.set_xlabel("contact element size h (mm)")
-    ax.set_ylabel("relative error against Hertz")
-    ax.set_title("Mesh convergence")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "convergence.png"), dpi=110)
-
     t = [r["seconds"] for r in table]
+    errors(out, table, a_h, p_h, h, "contact element size h (mm)",
+           "Mesh convergence", "convergence.png", reference_slope=True)
+    errors(out, table, a_h, p_h, t, "wall time of the run (s)",
+           "Time against error", "time_error.png")
+
+
+def errors(out, table, a_h, p_h, x, xlabel, title, name,
+           reference_slope=False):
+    """The relative errors of a and N_max of every mesh against x."""
+    n_fine = table[-1]["max_pressure"]
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    ax.loglog(t, e_a, "o-", label="|e_a|, a = edge of last element")
-    ax.loglog(t, e_fit, "s-", label="|e_a|, elliptic fit")
-    ax.loglog(t, e_n, "^-", label="|e_N|")
-    ax.loglog(t[:-1], [abs(r["max_pressure"] / n_fine - 1) for r in table[:-1]],
+    ax.loglog(x, [abs(r["a"] / a_h - 1) for r in table], "o-",
+              label="|e_a|, a = edge of last element")
+    ax.loglog(x, [abs(r["a_fit"] / a_h - 1) for r in table], "s-",
+              label="|e_a|, a from the elliptic fit")
+    e_n = [abs(r["max_pressure"] / p_h - 1) for r in table]
+    ax.loglog(x, e_n, "^-", label="|e_N|, N_max")
+    ax.loglog(x[:-1], [abs(r["max_pressure"] / n_fine - 1) for r in table[:-1]],
               "v--", label="|N_max / N_max(finest) - 1|")
-    for x, y, r in zip(t, e_n, table):
-        ax.annotate(f"{int(r['n_elements'])} el.", (x, y), fontsize=7,
+    if reference_slope:
+        ax.loglog(x, [h / a_h for h in x], "k:", label="h / a")
+    for xi, y, r in zip(x, e_n, table):
+        ax.annotate(f"{int(r['n_elements'])} el.", (xi, y), fontsize=7,
                     textcoords="offset points", xytext=(3, 3))
-    ax.set_xlabel("wall time of the run (s)")
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("relative error against Hertz")
-    ax.set_title("Time against error")
+    ax.set_title(title)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "time_error.png"), dpi=110)
-
+    fig.savefig(os.path.join(out, name), dpi=110)
 
 if __name__ == "__main__":
     main(sys.argv[1] if len(sys.argv) > 1 else "output")
