@@ -81,8 +81,8 @@ namespace Step6
 
   // @sect3{Reading and changing a parameter file}
   //
-  // The two small helpers declare a scene of two bodies with contact, read
-  // a file of this step's folder, and get or set one entry of a nested
+  // The two small functions below declare a scene of two bodies with contact,
+  // read a file of this step's folder, and get or set one entry of a nested
   // subsection such as "Body 2 / Material / Young's modulus".
   void
   read_scene(ParameterHandler &prm, const std::string &file)
