@@ -53,14 +53,14 @@ def stresses(out):
     r = [s["r"][i] for i in order]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for key, label in [("sigma_tt", r"$\sigma_{\theta\theta}$"), ("sigma_rr", r"$\sigma_{rr}$")]:
-        ax.plot(s["r"], s[key], ".", ms=1.5, alpha=0.4, label=label + " at the cell centroids")
+        ax.plot(s["r"], s[key], ".", ms=4, alpha=0.5, label=label + " at the cell centroids")
         ax.plot(r, [s["exact_" + key][i] for i in order], "k-", lw=1)
     ax.plot([], [], "k-", label="Lamé (exact)")
     ax.set_xlabel("r (mm)")
     ax.set_ylabel("stress (MPa)")
     ax.set_title("Polar stresses against the radius (%d triangles)" % len(r))
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8, markerscale=6)
+    ax.legend(fontsize=8, markerscale=2)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "stresses.png"), dpi=110)
 

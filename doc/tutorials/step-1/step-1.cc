@@ -29,8 +29,10 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -134,6 +136,13 @@ namespace Step1
     double       h;
     double       e_u, e_u_max, e_sigma, e_sigma_max;
     double       seconds_assembly, seconds_solve;
+
+    // The four errors in the order of the table.
+    std::array<double, 4>
+    errors() const
+    {
+      return {{e_u, e_u_max, e_sigma, e_sigma_max}};
+    }
   };
 
   // @sect3{The LameProblem class}
@@ -152,17 +161,23 @@ namespace Step1
     run();
 
   private:
+    // One mesh: build the body with the given number of global
+    // refinements, solve it, and measure its errors.
     CycleResult
     solve_on_mesh(const unsigned int refinements);
+    // The error measures of a solved body (see CycleResult).
     double
     l2_displacement_error(const Body<2> &body) const;
     double
     max_nodal_displacement_error(const Body<2> &body) const;
     std::pair<double, double>
     stress_errors(const Body<2> &body) const;
+    // Throws unless the mesh is the ring of the exact solution.
     void
     check_geometry(const Body<2> &body) const;
 
+    // The output: the table on the screen and in errors.csv, the stresses
+    // along the radius, the figures, and the check of the headline number.
     void
     print_and_write_table() const;
     void
@@ -172,6 +187,9 @@ namespace Step1
     void
     check_convergence() const;
 
+    // The parameters of the whole file (all subsections), the range of the
+    // study, where the output goes, the exact solution, and one
+    // CycleResult per mesh.
     ParameterHandler         prm;
     unsigned int             first_refinement, last_refinement;
     std::string              output_directory;
@@ -187,7 +205,47 @@ namespace Step1
   // `dpana --print-parameters step-1.prm`). We put them in `subsection
   // Body 1`, as in every dpana scene, and add two subsections of our own:
   // the range of the convergence study and the output directory, which
-  // dpana::output::Parameters declares.
+  // dpana::output::Parameters declares. The file, step-1.prm in the folder
+  // of this program, reads (apart from its opening comments):
+  //
+  //     subsection Body 1
+  //       subsection Geometry
+  //         set Type = quarter annulus
+  //         # Overwritten by the program on every cycle of the study.
+  //         set Global refinements = 1
+  //         subsection Quarter annulus
+  //           set Inner radius = 10
+  //           set Outer radius = 20
+  //         end
+  //       end
+  //       subsection Material
+  //         set Young's modulus = 200000
+  //         set Poisson's ratio = 0.3
+  //         set Plane state     = plane strain
+  //       end
+  //       subsection Boundary conditions
+  //         set Symmetry = x_axis, y_axis
+  //       end
+  //       subsection Loads
+  //         set Pressure = inner: 100
+  //       end
+  //     end
+  //     subsection Convergence study
+  //       set First refinement = 1
+  //       set Last refinement  = 6
+  //     end
+  //     subsection Output
+  //       set Directory = output
+  //     end
+  //
+  // The quarter annulus is one of the geometries of dpana's Geometry
+  // component (doc/geometry.md): the part x >= 0, y >= 0 of the ring
+  // between the two radii, meshed with triangles, its boundaries named
+  // `inner`, `outer`, `x_axis` (y = 0) and `y_axis` (x = 0). Symmetry makes
+  // u . n = 0 on the two straight edges: u_y = 0 on y = 0 and u_x = 0 on
+  // x = 0. The pressure is positive when it pushes on the surface, so the
+  // traction on the bore is -p n with n the outward normal of the body
+  // (pointing to the axis).
   //
   // The data of the exact solution are read back from the same file, so
   // that changing the radii, the material or the pressure in step-1.prm
@@ -208,6 +266,9 @@ namespace Step1
     output::Parameters::declare_parameters(prm);
     prm.leave_subsection();
 
+    // parse_file() reads the file with every entry declared; a misspelt
+    // entry, a value that does not match its pattern or a missing `end`
+    // becomes a dpana::InputError that names the file and the line.
     dpana::parameters::parse_file(prm, parameter_file);
 
     prm.enter_subsection("Convergence study");
@@ -275,6 +336,10 @@ namespace Step1
     using Clock      = std::chrono::steady_clock;
     const auto start = Clock::now();
 
+    // A Body owns its triangulation and everything built on it, so every
+    // cycle makes a new one. Its number of global refinements is changed
+    // in the ParameterHandler, exactly as a user would change it in the
+    // file; the body then parses the same subsections as before.
     prm.enter_subsection("Body 1");
     prm.enter_subsection("Geometry");
     prm.set("Global refinements", std::to_string(refinements));
@@ -456,32 +521,23 @@ namespace Step1
             << std::setprecision(6) << c.h << ',' << c.e_u << ',' << c.e_u_max
             << ',' << c.e_sigma << ',' << c.e_sigma_max << ','
             << c.seconds_assembly << ',' << c.seconds_solve << '\n';
-        std::cout << std::setw(3) << c.refinements << std::setw(7) << c.n_cells
-                  << std::setw(8) << c.n_dofs << "  " << std::fixed
-                  << std::setprecision(4) << c.h << std::scientific
-                  << std::setprecision(2);
-        const std::array<double, 4> e = {
-          {c.e_u, c.e_u_max, c.e_sigma, c.e_sigma_max}};
+        // Each error is followed by its rate against the previous mesh.
+        std::printf("%3u%7u%8u  %.4f", c.refinements, c.n_cells, c.n_dofs, c.h);
         for (unsigned int k = 0; k < 4; ++k)
           {
-            std::cout << "  " << e[k];
+            std::printf("  %.2e", c.errors()[k]);
             if (i == 0)
-              std::cout << "   -  ";
+              std::printf("   -  ");
             else
-              {
-                const std::array<double, 4> f = {{results[i - 1].e_u,
-                                                  results[i - 1].e_u_max,
-                                                  results[i - 1].e_sigma,
-                                                  results[i - 1].e_sigma_max}};
-                std::cout << std::fixed << std::setprecision(2) << "  "
-                          << rate(f[k], e[k], results[i - 1].h, c.h)
-                          << std::scientific;
-              }
+              std::printf("  %.2f",
+                          rate(results[i - 1].errors()[k],
+                               c.errors()[k],
+                               results[i - 1].h,
+                               c.h));
           }
-        std::cout << std::fixed << std::setprecision(3) << "  "
-                  << c.seconds_assembly + c.seconds_solve << std::endl
-                  << std::defaultfloat;
+        std::printf("  %.3f\n", c.seconds_assembly + c.seconds_solve);
       }
+    std::fflush(stdout);
   }
 
   // On one mesh: r and the polar stresses sigma_rr, sigma_tt of the
@@ -540,8 +596,9 @@ namespace Step1
     const double       rate_u     = rate(c.e_u, f.e_u, c.h, f.h);
     const double       rate_sigma = rate(c.e_sigma, f.e_sigma, c.h, f.h);
     std::cout << "Observed rates on the two finest meshes: displacement "
-              << std::setprecision(4) << rate_u << ", stress " << rate_sigma
-              << "; finest displacement error " << f.e_u << std::endl;
+              << std::fixed << std::setprecision(3) << rate_u << ", stress "
+              << rate_sigma << "; finest displacement error " << std::scientific
+              << f.e_u << std::defaultfloat << std::endl;
     AssertThrow(rate_u > 1.9,
                 ExcMessage("L2 displacement rate " + std::to_string(rate_u) +
                            " < 1.9"));
@@ -556,7 +613,11 @@ namespace Step1
   // @sect3{run()}
   //
   // The study: one cycle per refinement level, then the table, the plot and
-  // the check.
+  // the check. The first line printed gives the data of the problem and the
+  // two values of the exact solution worth remembering: the displacement
+  // of the bore u_r(a) and the hoop stress there, sigma_tt(a), the largest
+  // stress in the cylinder. At the point (a, 0) the hoop direction is e_y,
+  // so sigma_tt(a) is the yy component of the exact stress tensor there.
   void
   LameProblem::run()
   {

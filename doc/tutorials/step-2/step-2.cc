@@ -171,7 +171,54 @@ namespace Step2
   // boundary, which region, how many faces per contact element) and
   // condensation::Parameters the number of columns per blocked solve, both
   // in `subsection Contact` as in every dpana scene. The `Cost study`
-  // subsection is this program's own.
+  // subsection is this program's own. The file, step-2.prm in the folder of
+  // this program, reads (apart from its opening comments):
+  //
+  //     subsection Body 1
+  //       subsection Geometry
+  //         set Type = rectangle
+  //         # Overwritten by the program on every cycle of the cost study.
+  //         set Global refinements = 3
+  //         subsection Rectangle
+  //           set Lower corner      = -200, 0
+  //           set Upper corner      = 200, 200
+  //           set Subdivisions      = 40, 20
+  //           set Grading centre    = 0, 0
+  //           set Grading exponents = 2, 2
+  //         end
+  //       end
+  //       subsection Material
+  //         set Young's modulus = 130000
+  //         set Poisson's ratio = 0.2
+  //         set Plane state     = plane strain
+  //       end
+  //       subsection Boundary conditions
+  //         set Fixed = top: all
+  //       end
+  //     end
+  //     subsection Contact
+  //       set Boundary 1                = bottom
+  //       set Candidate centre          = 0, 0
+  //       set Candidate half width      = 20
+  //       set Faces per contact element = 2
+  //       set Columns per solve         = 256
+  //     end
+  //     subsection Cost study
+  //       set Refinements  = 0, 1, 2, 3
+  //       set Half widths  = 10, 20, 40, 80, 160
+  //     end
+  //     subsection Output
+  //       set Directory = output
+  //     end
+  //
+  // The grading moves the vertices of the 40 x 20 grid of the rectangle
+  // towards the centre of the base: a vertex at relative distance t from
+  // the planes x = 0 and y = 0 goes to t^2 (doc/geometry.md). With three
+  // global refinements the edges of the base are 0.0625 mm long at the
+  // centre and about 0.8 mm at |x| = 20 mm, so the contact elements (two
+  // edges each) range from 0.125 to 1.625 mm, and the top, 200 mm away,
+  // is meshed coarsely. The Contact entries select the faces of `bottom`
+  // whose centroids lie within 20 mm of the centre.
   BlockCompliance::BlockCompliance(const std::string &parameter_file)
   {
     prm.enter_subsection("Body 1");
