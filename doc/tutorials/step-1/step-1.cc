@@ -436,7 +436,11 @@ namespace Step1
   }
 
   // The nodal values are read through Body::vertex_dofs(), the map from a
-  // mesh vertex to its two degrees of freedom.
+  // mesh vertex to its two degrees of freedom. For P1 elements the nodal
+  // values are the whole discrete solution: u_h is their linear
+  // interpolant in each triangle. Vertices that the triangulation no
+  // longer uses (there are none after global refinement, but the vertex
+  // list of a deal.II triangulation may hold some) are skipped.
   double
   LameProblem::max_nodal_displacement_error(const Body<2> &body) const
   {
