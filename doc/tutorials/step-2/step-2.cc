@@ -441,9 +441,9 @@ namespace Step2
       Eigen::LLT<Eigen::MatrixXd>(A).info() == Eigen::Success;
 
     // Density: the normal-normal block A_NN (even rows and columns) has no
-    // small entry at all; in the whole of A only the couplings between a
-    // normal and a tangential unknown placed symmetrically about each other
-    // are small (they vanish for a symmetric pair on a half-plane).
+    // small entry at all. In the whole of A the small entries are
+    // normal-tangential couplings: that of each element with itself, which
+    // vanishes on a half-plane by symmetry, and a few between neighbours.
     const unsigned int n_elements = A.rows() / 2;
     double             nn_min = A(0, 0), nn_max = 0;
     for (unsigned int i = 0; i < n_elements; ++i)
@@ -457,7 +457,7 @@ namespace Step2
       (A.cwiseAbs().array() > 1e-3 * largest).cast<double>().mean();
 
     // The entries of A scale like the product of the widths of the two
-    // elements, which differ by a factor of 25 on this graded surface. The
+    // elements, which differ by a factor of 13 on this graded surface. The
     // spread of the eigenvalues is mostly that scaling: the Jacobi-scaled
     // matrix S A S, S = diag(A)^{-1/2}, has a much smaller condition number.
     const Eigen::VectorXd s = A.diagonal().cwiseSqrt().cwiseInverse();
