@@ -2,6 +2,7 @@
 #include <dpana/contact/line_search.h>
 #include <dpana/contact/method_of_multipliers.h>
 #include <dpana/contact/monitor.h>
+#include <dpana/contact/projected_gauss_seidel.h>
 
 #include <Eigen/QR>
 
@@ -77,63 +78,67 @@ namespace dpana
                     Eigen::VectorXd           &T,
                     const unsigned int         max_sweeps)
     {
-      const double omega = options.over_relaxation;
-      w.noalias()        = matrix * T;
-      w += right_hand_side;
-      bool fresh = true;
-      for (unsigned int sweep = 1; sweep <= max_sweeps; ++sweep)
+      auto refresh = [&]() {
+        w.noalias() = matrix * T;
+        w += right_hand_side;
+      };
+      auto sweep = [&](double &change, double &size) {
+        for (unsigned int j = 0; j < n; ++j)
+          block_step(matrix, W, radius, j, T, change, size);
+      };
+      return projected_gauss_seidel(options.tolerance,
+                                    max_sweeps,
+                                    refresh,
+                                    sweep);
+    }
+
+
+
+    // The exact minimiser of the block problem of element j, relaxed, and
+    // the column update of w.
+    void
+    FrictionQp::block_step(const Eigen::MatrixXd     &matrix,
+                           const std::vector<double> &W,
+                           const Eigen::VectorXd     &radius,
+                           const unsigned int         j,
+                           Eigen::VectorXd           &T,
+                           double                    &change,
+                           double                    &size)
+    {
+      const double  omega = options.over_relaxation;
+      const double *Wj    = W.data() + m * m * j;
+      double       *Tj    = T.data() + m * j;
+      double        g[2], t[2], delta[2];
+      // Linear term of the block problem: w_j - W_j T_j.
+      for (unsigned int a = 0; a < m; ++a)
         {
-          double change = 0.0, size = 0.0;
-          for (unsigned int j = 0; j < n; ++j)
-            {
-              const double *Wj = W.data() + m * m * j;
-              double       *Tj = T.data() + m * j;
-              double        g[2], t[2], delta[2];
-              // Linear term of the block problem: w_j - W_j T_j.
-              for (unsigned int a = 0; a < m; ++a)
-                {
-                  g[a] = w[m * j + a];
-                  for (unsigned int c = 0; c < m; ++c)
-                    g[a] -= Wj[m * a + c] * Tj[c];
-                }
-              set.minimise(radius[j], Wj, g, t);
-              if (omega != 1.0)
-                {
-                  double z[2];
-                  for (unsigned int a = 0; a < m; ++a)
-                    z[a] = (1.0 - omega) * Tj[a] + omega * t[a];
-                  set.project_tangential(radius[j], z, t);
-                }
-              bool moved = false;
-              for (unsigned int a = 0; a < m; ++a)
-                {
-                  delta[a] = t[a] - Tj[a];
-                  moved    = moved || (delta[a] != 0.0);
-                  change   = std::max(change, std::abs(delta[a]));
-                  size     = std::max(size, std::abs(t[a]));
-                  Tj[a]    = t[a];
-                }
-              if (moved)
-                {
-                  if (m == 1)
-                    w += delta[0] * matrix.col(j);
-                  else
-                    w += matrix.middleCols(2 * j, 2) *
-                         Eigen::Vector2d(delta[0], delta[1]);
-                }
-            }
-          if (change <= options.tolerance * size)
-            {
-              if (fresh)
-                return static_cast<int>(sweep);
-              w.noalias() = matrix * T;
-              w += right_hand_side;
-              fresh = true;
-            }
-          else
-            fresh = false;
+          g[a] = w[m * j + a];
+          for (unsigned int c = 0; c < m; ++c)
+            g[a] -= Wj[m * a + c] * Tj[c];
         }
-      return -static_cast<int>(max_sweeps);
+      set.minimise(radius[j], Wj, g, t);
+      if (omega != 1.0)
+        {
+          double z[2];
+          for (unsigned int a = 0; a < m; ++a)
+            z[a] = (1.0 - omega) * Tj[a] + omega * t[a];
+          set.project_tangential(radius[j], z, t);
+        }
+      bool moved = false;
+      for (unsigned int a = 0; a < m; ++a)
+        {
+          delta[a] = t[a] - Tj[a];
+          moved    = moved || (delta[a] != 0.0);
+          change   = std::max(change, std::abs(delta[a]));
+          size     = std::max(size, std::abs(t[a]));
+          Tj[a]    = t[a];
+        }
+      if (!moved)
+        return;
+      if (m == 1)
+        w += delta[0] * matrix.col(j);
+      else
+        w += matrix.middleCols(2 * j, 2) * Eigen::Vector2d(delta[0], delta[1]);
     }
 
 
@@ -145,16 +150,9 @@ namespace dpana
                           Eigen::VectorXd       &T,
                           Eigen::VectorXd       &beta)
     {
-      InnerResult result;
       if (G.rows() == 0)
-        {
-          const int s = pgs(M, blocks, c, radius, T, options.max_iterations);
-          result.converged  = s > 0;
-          result.iterations = static_cast<unsigned int>(std::abs(s));
-          if (!result.converged)
-            result.message = "friction PGS: sweep limit reached";
-          return result;
-        }
+        return sweeps_result(
+          pgs(M, blocks, c, radius, T, options.max_iterations), "friction");
       return solve_with_multipliers(
         G,
         e,

@@ -1,6 +1,7 @@
 #include <dpana/contact/method_of_multipliers.h>
 #include <dpana/contact/monitor.h>
 #include <dpana/contact/normal_lcp.h>
+#include <dpana/contact/projected_gauss_seidel.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -50,41 +51,31 @@ namespace dpana
                    Eigen::VectorXd       &N,
                    const unsigned int     max_sweeps)
     {
-      const Eigen::Index n     = N.size();
-      const double       omega = options.over_relaxation;
-      w.noalias()              = matrix * N;
-      w += right_hand_side;
-      bool fresh = true;
-      for (unsigned int sweep = 1; sweep <= max_sweeps; ++sweep)
-        {
-          double change = 0.0, size = 0.0;
-          for (Eigen::Index j = 0; j < n; ++j)
-            {
-              const double Nj = N[j];
-              const double Nnew =
-                std::min(0.0, Nj - omega * w[j] * inv_diag[j]);
-              const double delta = Nnew - Nj;
-              if (delta != 0.0)
-                {
-                  w += delta * matrix.col(j);
-                  N[j]   = Nnew;
-                  change = std::max(change, std::abs(delta));
-                }
-              size = std::max(size, std::abs(Nnew));
-            }
-          if (change <= options.tolerance * size)
-            {
-              if (fresh)
-                return static_cast<int>(sweep);
-              // Re-check with an exact gradient.
-              w.noalias() = matrix * N;
-              w += right_hand_side;
-              fresh = true;
-            }
-          else
-            fresh = false;
-        }
-      return -static_cast<int>(max_sweeps);
+      const Eigen::Index n       = N.size();
+      const double       omega   = options.over_relaxation;
+      auto               refresh = [&]() {
+        w.noalias() = matrix * N;
+        w += right_hand_side;
+      };
+      auto sweep = [&](double &change, double &size) {
+        for (Eigen::Index j = 0; j < n; ++j)
+          {
+            const double Nj    = N[j];
+            const double Nnew  = std::min(0.0, Nj - omega * w[j] * inv_diag[j]);
+            const double delta = Nnew - Nj;
+            if (delta != 0.0)
+              {
+                w += delta * matrix.col(j);
+                N[j]   = Nnew;
+                change = std::max(change, std::abs(delta));
+              }
+            size = std::max(size, std::abs(Nnew));
+          }
+      };
+      return projected_gauss_seidel(options.tolerance,
+                                    max_sweeps,
+                                    refresh,
+                                    sweep);
     }
 
 
@@ -95,16 +86,9 @@ namespace dpana
                          Eigen::VectorXd       &N,
                          Eigen::VectorXd       &alpha)
     {
-      InnerResult result;
       if (G.rows() == 0)
-        {
-          const int s = pgs(M, inverse_diagonal, b, N, options.max_iterations);
-          result.converged  = s > 0;
-          result.iterations = static_cast<unsigned int>(std::abs(s));
-          if (!result.converged)
-            result.message = "normal PGS: sweep limit reached";
-          return result;
-        }
+        return sweeps_result(
+          pgs(M, inverse_diagonal, b, N, options.max_iterations), "normal");
 
       // Method of multipliers for the equality rows.
       return solve_with_multipliers(

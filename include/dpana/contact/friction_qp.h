@@ -93,6 +93,17 @@ namespace dpana
           Eigen::VectorXd           &T,
           unsigned int               max_sweeps);
 
+      // One block of a sweep (the exact local minimiser, relaxed, and the
+      // column update of w), raising change and size.
+      void
+      block_step(const Eigen::MatrixXd     &matrix,
+                 const std::vector<double> &blocks,
+                 const Eigen::VectorXd     &radius,
+                 const unsigned int         j,
+                 Eigen::VectorXd           &T,
+                 double                    &change,
+                 double                    &size);
+
       // Natural map F (size q + m) at (T, beta); records the regions.
       void
       natural_map(const Eigen::VectorXd &c,

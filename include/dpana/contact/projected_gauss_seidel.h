@@ -1,0 +1,71 @@
+// The sweep loop shared by the projected Gauss-Seidel inner solvers of
+// dpana (normal LCP and friction QP; method_of_multipliers.h adds the
+// equality rows).
+#ifndef dpana_contact_projected_gauss_seidel_h
+#define dpana_contact_projected_gauss_seidel_h
+
+#include <dpana/contact/normal_lcp.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace dpana
+{
+  namespace contact
+  {
+    // Sweeps of projected Gauss-Seidel, at most @p max_sweeps of them. The
+    // gradient w = matrix x + rhs is kept current by column updates within
+    // a sweep. A sweep whose largest change of an entry is at most
+    // tolerance times the largest entry stops the loop if it started from
+    // a gradient computed from scratch; otherwise the gradient is
+    // recomputed and the test repeated, so that accumulated round-off
+    // cannot fake convergence.
+    //
+    // @p refresh() computes the gradient from scratch; @p sweep(change,
+    // size) makes one sweep and raises change and size to the largest
+    // change and the largest entry. Returns the number of sweeps, negative
+    // if the loop hit max_sweeps.
+    template <typename Refresh, typename Sweep>
+    int
+    projected_gauss_seidel(const double       tolerance,
+                           const unsigned int max_sweeps,
+                           Refresh          &&refresh,
+                           Sweep            &&sweep)
+    {
+      refresh();
+      bool fresh = true;
+      for (unsigned int k = 1; k <= max_sweeps; ++k)
+        {
+          double change = 0.0, size = 0.0;
+          sweep(change, size);
+          if (change <= tolerance * size)
+            {
+              if (fresh)
+                return static_cast<int>(k);
+              refresh();
+              fresh = true;
+            }
+          else
+            fresh = false;
+        }
+      return -static_cast<int>(max_sweeps);
+    }
+
+
+
+    // The result of a run of sweeps without equality rows (@p sweeps as
+    // returned by projected_gauss_seidel(); name: "normal", "friction").
+    inline InnerResult
+    sweeps_result(const int sweeps, const std::string &name)
+    {
+      InnerResult result;
+      result.converged  = sweeps > 0;
+      result.iterations = static_cast<unsigned int>(std::abs(sweeps));
+      if (!result.converged)
+        result.message = name + " PGS: sweep limit reached";
+      return result;
+    }
+  } // namespace contact
+} // namespace dpana
+
+#endif
