@@ -1,5 +1,6 @@
 // The driver of the contact solvers of dpana: one problem (problem.h), one
-// options structure, one function, one error measure (residual.h).
+// options structure, one function, one error measure (residual.h) with one
+// stopping and stall test (monitor.h).
 //
 // Solvers (see doc/contact_solvers.md for the mathematics):
 //   - splitting_pgs, splitting_active_set: the D-PANA splitting of the seeds
