@@ -117,21 +117,14 @@ namespace dpana
             g[a] -= Wj[m * a + c] * Tj[c];
         }
       set.minimise(radius[j], Wj, g, t);
-      if (omega != 1.0)
-        {
-          double z[2];
-          for (unsigned int a = 0; a < m; ++a)
-            z[a] = (1.0 - omega) * Tj[a] + omega * t[a];
-          set.project_tangential(radius[j], z, t);
-        }
-      bool moved = false;
+      const bool moved = relaxed_block_update(
+        m, omega, Tj, t, delta, [&](const double *z, double *p) {
+          set.project_tangential(radius[j], z, p);
+        });
       for (unsigned int a = 0; a < m; ++a)
         {
-          delta[a] = t[a] - Tj[a];
-          moved    = moved || (delta[a] != 0.0);
-          change   = std::max(change, std::abs(delta[a]));
-          size     = std::max(size, std::abs(t[a]));
-          Tj[a]    = t[a];
+          change = std::max(change, std::abs(delta[a]));
+          size   = std::max(size, std::abs(Tj[a]));
         }
       if (!moved)
         return;

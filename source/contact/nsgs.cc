@@ -2,6 +2,7 @@
 #include <dpana/contact/local_coulomb.h>
 #include <dpana/contact/monitor.h>
 #include <dpana/contact/nsgs.h>
+#include <dpana/contact/projected_gauss_seidel.h>
 
 #include <string>
 #include <vector>
@@ -133,20 +134,10 @@ namespace dpana
               q[a] -= Wj[d * a + b] * rj[b];
           }
         solve_local_coulomb(set, problem.mu[j], Wj, q, x, hint[j]);
-        if (omega != 1.0)
-          {
-            double z[3];
-            for (unsigned int a = 0; a < d; ++a)
-              z[a] = (1.0 - omega) * rj[a] + omega * x[a];
-            set.project_cone(problem.mu[j], z, x);
-          }
-        bool moved = false;
-        for (unsigned int a = 0; a < d; ++a)
-          {
-            delta[a] = x[a] - rj[a];
-            moved    = moved || delta[a] != 0.0;
-            rj[a]    = x[a];
-          }
+        const bool moved = relaxed_block_update(
+          d, omega, rj, x, delta, [&](const double *z, double *p) {
+            set.project_cone(problem.mu[j], z, p);
+          });
         if (!moved)
           return;
         if (d == 2)

@@ -53,6 +53,40 @@ namespace dpana
 
 
 
+    // The local update of one block of k <= 3 entries in a (projected or
+    // nonsmooth) Gauss-Seidel sweep with relaxation omega: with omega != 1
+    // the point (1 - omega) x + omega x_local is projected back onto the
+    // block's set by @p project(z, x_local); then x_local replaces x and
+    // delta = x_local - x (the old x) is written for the column update of
+    // the gradient. Returns whether the block moved.
+    template <typename Project>
+    bool
+    relaxed_block_update(const unsigned int k,
+                         const double       omega,
+                         double            *x,
+                         double            *x_local,
+                         double            *delta,
+                         Project          &&project)
+    {
+      if (omega != 1.0)
+        {
+          double z[3];
+          for (unsigned int a = 0; a < k; ++a)
+            z[a] = (1.0 - omega) * x[a] + omega * x_local[a];
+          project(z, x_local);
+        }
+      bool moved = false;
+      for (unsigned int a = 0; a < k; ++a)
+        {
+          delta[a] = x_local[a] - x[a];
+          moved    = moved || delta[a] != 0.0;
+          x[a]     = x_local[a];
+        }
+      return moved;
+    }
+
+
+
     // The result of a run of sweeps without equality rows (@p sweeps as
     // returned by projected_gauss_seidel(); name: "normal", "friction").
     inline InnerResult
