@@ -109,13 +109,7 @@ namespace dpana
       const double *Wj    = W.data() + m * m * j;
       double       *Tj    = T.data() + m * j;
       double        g[2], t[2], delta[2];
-      // Linear term of the block problem: w_j - W_j T_j.
-      for (unsigned int a = 0; a < m; ++a)
-        {
-          g[a] = w[m * j + a];
-          for (unsigned int c = 0; c < m; ++c)
-            g[a] -= Wj[m * a + c] * Tj[c];
-        }
+      local_linear_term(m, Wj, w.data() + m * j, Tj, g);
       set.minimise(radius[j], Wj, g, t);
       const bool moved = relaxed_block_update(
         m, omega, Tj, t, delta, [&](const double *z, double *p) {

@@ -127,12 +127,7 @@ namespace dpana
         double       *rj = r.data() + d * j;
         double        q[3], x[3], delta[3];
         // q_j = w_j - A_jj r_j: the displacement due to the other elements.
-        for (unsigned int a = 0; a < d; ++a)
-          {
-            q[a] = w[d * j + a];
-            for (unsigned int b = 0; b < d; ++b)
-              q[a] -= Wj[d * a + b] * rj[b];
-          }
+        local_linear_term(d, Wj, w.data() + d * j, rj, q);
         solve_local_coulomb(set, problem.mu[j], Wj, q, x, hint[j]);
         const bool moved = relaxed_block_update(
           d, omega, rj, x, delta, [&](const double *z, double *p) {

@@ -53,6 +53,27 @@ namespace dpana
 
 
 
+    // The linear term q = w_j - W_j x_j of the local problem of one block
+    // of k <= 3 entries (W_j its diagonal block, row-major; w_j and x_j its
+    // entries of the gradient and of the unknowns): the gradient due to
+    // the other blocks.
+    inline void
+    local_linear_term(const unsigned int k,
+                      const double      *W_j,
+                      const double      *w_j,
+                      const double      *x_j,
+                      double            *q)
+    {
+      for (unsigned int a = 0; a < k; ++a)
+        {
+          q[a] = w_j[a];
+          for (unsigned int b = 0; b < k; ++b)
+            q[a] -= W_j[k * a + b] * x_j[b];
+        }
+    }
+
+
+
     // The local update of one block of k <= 3 entries in a (projected or
     // nonsmooth) Gauss-Seidel sweep with relaxation omega: with omega != 1
     // the point (1 - omega) x + omega x_local is projected back onto the
