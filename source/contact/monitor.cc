@@ -97,7 +97,7 @@ namespace dpana
           case Verdict::iterate:
             break;
         }
-      return name + ": iterating";
+      return "";
     }
 
 

@@ -91,7 +91,8 @@ namespace dpana
       void
       restart_stall_count(const double residual);
 
-      // The message of a verdict (converged or diverged).
+      // The message of a verdict that stops the solver (converged or
+      // diverged); empty for iterate.
       std::string
       message(const Verdict verdict) const;
 
