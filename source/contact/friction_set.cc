@@ -100,31 +100,51 @@ namespace dpana
             p[1 + k] = 0.0;
           return;
         }
-      if (cone != ConeModel::polygon)
-        {
-          const double pn = -x[0];
-          const double t  = (m == 1) ? std::abs(x[1]) : std::hypot(x[1], x[2]);
-          if (t <= mu * pn)
-            {
-              for (unsigned int k = 0; k <= m; ++k)
-                p[k] = x[k];
-            }
-          else if (mu * t <= -pn)
-            {
-              for (unsigned int k = 0; k <= m; ++k)
-                p[k] = 0.0;
-            }
-          else
-            {
-              const double a = (pn + mu * t) / (1.0 + mu * mu);
-              p[0]           = -a;
-              for (unsigned int k = 0; k < m; ++k)
-                p[1 + k] = mu * a * x[1 + k] / t;
-            }
-          return;
-        }
+      if (cone == ConeModel::polygon)
+        project_polygon_cone(mu, x, p);
+      else
+        project_round_cone(mu, x, p);
+    }
 
-      // Polygon cone.
+
+
+    // Interval and disc: inside, in the polar cone (projection: the apex),
+    // or onto the boundary ray through x.
+    void
+    FrictionSet::project_round_cone(const double  mu,
+                                    const double *x,
+                                    double       *p) const
+    {
+      const unsigned int m  = dim - 1;
+      const double       pn = -x[0];
+      const double       t = (m == 1) ? std::abs(x[1]) : std::hypot(x[1], x[2]);
+      if (t <= mu * pn)
+        {
+          for (unsigned int k = 0; k <= m; ++k)
+            p[k] = x[k];
+        }
+      else if (mu * t <= -pn)
+        {
+          for (unsigned int k = 0; k <= m; ++k)
+            p[k] = 0.0;
+        }
+      else
+        {
+          const double a = (pn + mu * t) / (1.0 + mu * mu);
+          p[0]           = -a;
+          for (unsigned int k = 0; k < m; ++k)
+            p[1 + k] = mu * a * x[1 + k] / t;
+        }
+    }
+
+
+
+    // Polygon: the candidates of the comment above.
+    void
+    FrictionSet::project_polygon_cone(const double  mu,
+                                      const double *x,
+                                      double       *p) const
+    {
       const unsigned int s        = sides;
       auto               violated = [&](const unsigned int i, const double *z) {
         const Eigen::Vector2d &n = facet_normals[i];
@@ -446,44 +466,70 @@ namespace dpana
           return;
         }
 
+      const double inverse[3] = {i00, i01, i11}, T0[2] = {t0, t1};
       if (cone == ConeModel::disc)
-        {
-          // Secular equation in the eigenbasis of W.
-          Eigen::Matrix2d M;
-          M << W[0], W[1], W[2], W[3];
-          Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig;
-          eig.computeDirect(M);
-          const Eigen::Vector2d w = eig.eigenvalues();
-          const Eigen::Vector2d gt =
-            eig.eigenvectors().transpose() * Eigen::Vector2d(g[0], g[1]);
-          double lambda = 0.0;
-          for (unsigned int it = 0; it < 200; ++it)
-            {
-              const double a0  = gt[0] / (w[0] + lambda);
-              const double a1  = gt[1] / (w[1] + lambda);
-              const double n2  = a0 * a0 + a1 * a1;
-              const double nt  = std::sqrt(n2);
-              const double phi = 1.0 / nt - 1.0 / c;
-              const double dphi =
-                (a0 * a0 / (w[0] + lambda) + a1 * a1 / (w[1] + lambda)) /
-                (n2 * nt);
-              const double step = -phi / dphi;
-              lambda += step;
-              if (lambda < 0.0)
-                lambda = 0.0;
-              if (std::abs(step) <= 1e-15 * (lambda + w[0] + w[1]))
-                break;
-            }
-          const Eigen::Vector2d Tt(-gt[0] / (w[0] + lambda),
-                                   -gt[1] / (w[1] + lambda));
-          Eigen::Vector2d       Tv = eig.eigenvectors() * Tt;
-          Tv *= c / Tv.norm();
-          T[0] = Tv[0];
-          T[1] = Tv[1];
-          return;
-        }
+        minimise_disc(c, W, g, T);
+      else
+        minimise_polygon(c, W, g, inverse, T0, T);
+    }
 
-      // Polygon: facet-line minimisers and vertices.
+
+
+    // Disc: the secular equation 1/||T(lambda)|| = 1/c in the eigenbasis of
+    // W, by a safeguarded Newton iteration.
+    void
+    FrictionSet::minimise_disc(const double  c,
+                               const double *W,
+                               const double *g,
+                               double       *T) const
+    {
+      // Secular equation in the eigenbasis of W.
+      Eigen::Matrix2d M;
+      M << W[0], W[1], W[2], W[3];
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig;
+      eig.computeDirect(M);
+      const Eigen::Vector2d w = eig.eigenvalues();
+      const Eigen::Vector2d gt =
+        eig.eigenvectors().transpose() * Eigen::Vector2d(g[0], g[1]);
+      double lambda = 0.0;
+      for (unsigned int it = 0; it < 200; ++it)
+        {
+          const double a0  = gt[0] / (w[0] + lambda);
+          const double a1  = gt[1] / (w[1] + lambda);
+          const double n2  = a0 * a0 + a1 * a1;
+          const double nt  = std::sqrt(n2);
+          const double phi = 1.0 / nt - 1.0 / c;
+          const double dphi =
+            (a0 * a0 / (w[0] + lambda) + a1 * a1 / (w[1] + lambda)) / (n2 * nt);
+          const double step = -phi / dphi;
+          lambda += step;
+          if (lambda < 0.0)
+            lambda = 0.0;
+          if (std::abs(step) <= 1e-15 * (lambda + w[0] + w[1]))
+            break;
+        }
+      const Eigen::Vector2d Tt(-gt[0] / (w[0] + lambda),
+                               -gt[1] / (w[1] + lambda));
+      Eigen::Vector2d       Tv = eig.eigenvectors() * Tt;
+      Tv *= c / Tv.norm();
+      T[0] = Tv[0];
+      T[1] = Tv[1];
+    }
+
+
+
+    // Polygon: facet-line minimisers and vertices. inverse: the entries
+    // (0,0), (0,1), (1,1) of W^{-1}; T0 = -W^{-1} g.
+    void
+    FrictionSet::minimise_polygon(const double  c,
+                                  const double *W,
+                                  const double *g,
+                                  const double *inverse,
+                                  const double *T0,
+                                  double       *T) const
+    {
+      const double i00 = inverse[0], i01 = inverse[1], i11 = inverse[2];
+      const double t0 = T0[0], t1 = T0[1];
       const int    s         = static_cast<int>(sides);
       const double tol       = 1e-13 * c;
       auto         objective = [&](const double a0, const double a1) {

@@ -102,6 +102,374 @@ namespace dpana
           return true;
         }
       };
+
+
+
+      // The local problem of one element (see local_coulomb.h) and the cases
+      // of its solution; solve() tries them in the order separated, stick,
+      // slip.
+      class LocalCoulomb
+      {
+      public:
+        LocalCoulomb(const FrictionSet &set,
+                     const double       mu,
+                     const double      *W,
+                     const double      *q);
+
+        int
+        solve(double *r, double &hint);
+
+      private:
+        // r = -W^{-1} q, written to stick.
+        void
+        form_stick();
+
+        // Is the stick candidate inside the friction set?
+        bool
+        stick_admissible() const;
+
+        // Slip cases; each returns true with r (and hint) set when one is
+        // admissible, and offers its candidates to best.
+        bool
+        slip_2d(double *r, double &hint);
+
+        bool
+        slip_polygon(double *r, double &hint);
+
+        bool
+        slip_polygon_facet(const int i, double *r, double &hint);
+
+        bool
+        slip_polygon_vertex(const int i, double *r, double &hint);
+
+        bool
+        slip_disc(double *r, double &hint);
+
+        // Is the disc slip at angle t admissible? (The candidate is offered
+        // to best.)
+        bool
+        accept_disc_slip(const double t, double *r, double &hint);
+
+        // Newton iteration on the slip direction from angle t0; false if it
+        // breaks down. The end point is written to t.
+        bool
+        disc_newton(const double t0, double &t) const;
+
+        // Bisection of a sign change of the direction equation on [a, b]
+        // with f(a) = fa; returns the midpoint of the final bracket.
+        double
+        disc_bisection(double a, double b, double fa) const;
+
+        const FrictionSet      &set;
+        const double            mu;
+        const double           *W, *q;
+        const unsigned int      d;
+        const double            qscale;
+        static constexpr double tol      = 1e-13;
+        double                  stick[3] = {0, 0, 0};
+        Best                    best;
+        DiscSlip                disc;
+      };
+
+
+
+      LocalCoulomb::LocalCoulomb(const FrictionSet &set,
+                                 const double       mu,
+                                 const double      *W,
+                                 const double      *q)
+        : set(set)
+        , mu(mu)
+        , W(W)
+        , q(q)
+        , d(set.tangential_dim() + 1)
+        , qscale(std::abs(q[0]) + std::abs(q[1]) +
+                 (d == 3 ? std::abs(q[2]) : 0.0))
+        , disc{W, q, mu}
+      {
+      }
+
+
+
+      void
+      LocalCoulomb::form_stick()
+      {
+        if (d == 2)
+          {
+            const double det = W[0] * W[3] - W[1] * W[2];
+            stick[0]         = -(W[3] * q[0] - W[1] * q[1]) / det;
+            stick[1]         = -(-W[2] * q[0] + W[0] * q[1]) / det;
+          }
+        else
+          {
+            const Eigen::Matrix3d Wm =
+              Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(W);
+            const Eigen::Vector3d x =
+              -Wm.llt().solve(Eigen::Map<const Eigen::Vector3d>(q));
+            stick[0] = x[0];
+            stick[1] = x[1];
+            stick[2] = x[2];
+          }
+      }
+
+
+
+      bool
+      LocalCoulomb::stick_admissible() const
+      {
+        return stick[0] <= 0.0 && set.gauge(stick + 1) <=
+                                    -mu * stick[0] + tol * (std::abs(stick[0]) +
+                                                            std::abs(stick[1]) +
+                                                            std::abs(stick[2]));
+      }
+
+
+
+      // 2D: slip forward / backward, T = -s mu N; the hint orders the two.
+      bool
+      LocalCoulomb::slip_2d(double *r, double &hint)
+      {
+        const double first = (hint < 0.0) ? -1.0 : 1.0;
+        for (const double s : {first, -first})
+          {
+            const double den = W[0] - s * mu * W[1];
+            double       c[3];
+            c[0]            = -q[0] / den;
+            c[1]            = -s * mu * c[0];
+            c[2]            = 0.0;
+            const double uT = W[2] * c[0] + W[3] * c[1] + q[1];
+            if (den > 0.0 && c[0] <= 0.0 &&
+                s * uT <= tol * (std::abs(W[2] * c[0]) + std::abs(q[1]) +
+                                 std::abs(W[3] * c[1])))
+              {
+                r[0] = c[0];
+                r[1] = c[1];
+                hint = s;
+                return true;
+              }
+            best.offer(set, mu, W, q, c);
+          }
+        return false;
+      }
+
+
+
+      // 3D polygon: slip on a facet or at a vertex, starting from the hint.
+      bool
+      LocalCoulomb::slip_polygon(double *r, double &hint)
+      {
+        const int s     = static_cast<int>(set.normals().size());
+        int       start = static_cast<int>(hint);
+        if (start < 0 || start >= 2 * s)
+          start = 0;
+        start %= s;
+        for (int k = 0; k < s; ++k)
+          {
+            const int i = (start + k) % s;
+            if (slip_polygon_facet(i, r, hint) ||
+                slip_polygon_vertex(i, r, hint))
+              return true;
+          }
+        return false;
+      }
+
+
+
+      // Facet i: u_N = 0, u_T = -lambda n_i, n_i . T = -mu N.
+      bool
+      LocalCoulomb::slip_polygon_facet(const int i, double *r, double &hint)
+      {
+        const auto            &normals = set.normals();
+        const int              s       = static_cast<int>(normals.size());
+        const Eigen::Vector2d &n       = normals[i];
+        Eigen::Matrix4d        K;
+        K << W[0], W[1], W[2], 0.0, W[3], W[4], W[5], n[0], W[6], W[7], W[8],
+          n[1], mu, n[0], n[1], 0.0;
+        const Eigen::Vector4d x =
+          K.partialPivLu().solve(Eigen::Vector4d(-q[0], -q[1], -q[2], 0));
+        const double           c[3] = {x[0], x[1], x[2]};
+        const double           cap  = -mu * x[0];
+        const double           tl   = tol * (cap + qscale / W[0]);
+        const Eigen::Vector2d &na   = normals[(i + s - 1) % s];
+        const Eigen::Vector2d &nb   = normals[(i + 1) % s];
+        if (x[0] <= 0.0 && x[3] >= -tol * qscale &&
+            na[0] * x[1] + na[1] * x[2] <= cap + tl &&
+            nb[0] * x[1] + nb[1] * x[2] <= cap + tl)
+          {
+            std::copy(c, c + 3, r);
+            hint = i;
+            return true;
+          }
+        best.offer(set, mu, W, q, c);
+        return false;
+      }
+
+
+
+      // Vertex i (between facets i and i+1): T = -mu N v_i, u_N = 0, and
+      // -u_T in the cone of n_i and n_{i+1}.
+      bool
+      LocalCoulomb::slip_polygon_vertex(const int i, double *r, double &hint)
+      {
+        const auto            &normals = set.normals();
+        const int              s       = static_cast<int>(normals.size());
+        const Eigen::Vector2d &v       = set.vertices()[i];
+        const double           den  = W[0] - mu * (W[1] * v[0] + W[2] * v[1]);
+        const double           N    = -q[0] / den;
+        const double           c[3] = {N, -mu * N * v[0], -mu * N * v[1]};
+        if (den > 0.0 && N <= 0.0)
+          {
+            const Eigen::Matrix3d Wm =
+              Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(W);
+            const Eigen::Vector3d u = Wm * Eigen::Vector3d(c[0], c[1], c[2]) +
+                                      Eigen::Vector3d(q[0], q[1], q[2]);
+            const Eigen::Vector2d &n  = normals[i];
+            const Eigen::Vector2d &nb = normals[(i + 1) % s];
+            Eigen::Matrix2d        B;
+            B << n[0], nb[0], n[1], nb[1];
+            const Eigen::Vector2d ab =
+              B.inverse() * Eigen::Vector2d(-u[1], -u[2]);
+            const double tl = tol * (std::abs(u[1]) + std::abs(u[2]) + qscale);
+            if (ab[0] >= -tl && ab[1] >= -tl)
+              {
+                std::copy(c, c + 3, r);
+                hint = s + i;
+                return true;
+              }
+          }
+        best.offer(set, mu, W, q, c);
+        return false;
+      }
+
+
+
+      bool
+      LocalCoulomb::accept_disc_slip(const double t, double *r, double &hint)
+      {
+        double f, df, along, p;
+        if (!disc.evaluate(t, f, df, along, p))
+          return false;
+        const double c[3] = {-p, mu * p * std::cos(t), mu * p * std::sin(t)};
+        best.offer(set, mu, W, q, c);
+        const double uscale = qscale + std::abs(W[0] * p);
+        if (along <= tol * uscale && std::abs(f) <= 1e-10 * uscale)
+          {
+            std::copy(c, c + 3, r);
+            hint = t;
+            return true;
+          }
+        return false;
+      }
+
+
+
+      bool
+      LocalCoulomb::disc_newton(const double t0, double &t) const
+      {
+        t = t0;
+        for (unsigned int it = 0; it < 30; ++it)
+          {
+            double f, df, along, p;
+            if (!disc.evaluate(t, f, df, along, p) || df == 0.0)
+              return false;
+            const double step = f / df;
+            t -= step;
+            if (std::abs(step) < 1e-15)
+              break;
+          }
+        return true;
+      }
+
+
+
+      double
+      LocalCoulomb::disc_bisection(double a, double b, double fa) const
+      {
+        for (unsigned int it = 0; it < 80 && b - a > 1e-16; ++it)
+          {
+            const double c = 0.5 * (a + b);
+            double       fc, df, along, p;
+            if (!disc.evaluate(c, fc, df, along, p))
+              break;
+            if ((fc > 0.0) == (fa > 0.0))
+              {
+                a  = c;
+                fa = fc;
+              }
+            else
+              b = c;
+          }
+        return 0.5 * (a + b);
+      }
+
+
+
+      // 3D disc: the slip direction t solves f(t) = 0 with e(t) . u_T <= 0.
+      // Newton from the hint and from the stick trial direction; then f is
+      // sampled at 64 angles and every sign change is bisected.
+      bool
+      LocalCoulomb::slip_disc(double *r, double &hint)
+      {
+        const double starts[2] = {hint, std::atan2(stick[2], stick[1])};
+        for (const double t0 : starts)
+          {
+            double t;
+            if (disc_newton(t0, t) && accept_disc_slip(t, r, hint))
+              return true;
+          }
+        const unsigned int K = 64;
+        double             ft[K + 1];
+        bool               valid[K + 1];
+        for (unsigned int k = 0; k <= K; ++k)
+          {
+            double df, along, p;
+            valid[k] = disc.evaluate(2.0 * M_PI * k / K, ft[k], df, along, p);
+          }
+        for (unsigned int k = 0; k < K; ++k)
+          {
+            if (!valid[k] || !valid[k + 1] ||
+                (ft[k] > 0.0) == (ft[k + 1] > 0.0))
+              continue;
+            const double t = disc_bisection(2.0 * M_PI * k / K,
+                                            2.0 * M_PI * (k + 1) / K,
+                                            ft[k]);
+            if (accept_disc_slip(t, r, hint))
+              return true;
+          }
+        return false;
+      }
+
+
+
+      int
+      LocalCoulomb::solve(double *r, double &hint)
+      {
+        for (unsigned int a = 0; a < d; ++a)
+          r[a] = 0.0;
+        if (q[0] <= 0.0) // separated
+          return 0;
+        if (mu == 0.0) // without friction: T = 0 and u_N = 0
+          {
+            r[0] = -q[0] / W[0];
+            return 2;
+          }
+        form_stick();
+        if (stick_admissible())
+          {
+            std::copy(stick, stick + d, r);
+            return 1;
+          }
+        best.offer(set, mu, W, q, stick);
+        const bool slip = (d == 2) ? slip_2d(r, hint) :
+                          (set.model() == ConeModel::polygon) ?
+                                     slip_polygon(r, hint) :
+                                     slip_disc(r, hint);
+        if (slip)
+          return 2;
+        // No case passed its tests (round-off at case boundaries): the
+        // candidate of least local residual.
+        std::copy(best.r, best.r + d, r);
+        return 3;
+      }
     } // namespace
 
 
@@ -114,228 +482,7 @@ namespace dpana
                         double            *r,
                         double            &hint)
     {
-      const unsigned int m = set.tangential_dim();
-      const unsigned int d = m + 1;
-      for (unsigned int a = 0; a < d; ++a)
-        r[a] = 0.0;
-
-      // Separated.
-      if (q[0] <= 0.0)
-        return 0;
-
-      // Without friction: T = 0 and u_N = 0.
-      if (mu == 0.0)
-        {
-          r[0] = -q[0] / W[0];
-          return 2;
-        }
-
-      const double qscale =
-        std::abs(q[0]) + std::abs(q[1]) + (d == 3 ? std::abs(q[2]) : 0.0);
-      const double tol = 1e-13;
-
-      // Stick: r = -W^{-1} q.
-      double stick[3] = {0, 0, 0};
-      if (d == 2)
-        {
-          const double det = W[0] * W[3] - W[1] * W[2];
-          stick[0]         = -(W[3] * q[0] - W[1] * q[1]) / det;
-          stick[1]         = -(-W[2] * q[0] + W[0] * q[1]) / det;
-        }
-      else
-        {
-          const Eigen::Matrix3d Wm =
-            Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(W);
-          const Eigen::Vector3d x =
-            -Wm.llt().solve(Eigen::Map<const Eigen::Vector3d>(q));
-          stick[0] = x[0];
-          stick[1] = x[1];
-          stick[2] = x[2];
-        }
-      if (stick[0] <= 0.0 &&
-          set.gauge(stick + 1) <=
-            -mu * stick[0] + tol * (std::abs(stick[0]) + std::abs(stick[1]) +
-                                    std::abs(stick[2])))
-        {
-          std::copy(stick, stick + d, r);
-          return 1;
-        }
-
-      Best best;
-      best.offer(set, mu, W, q, stick);
-
-      if (d == 2)
-        {
-          // Slip forward / backward; the hint orders the two.
-          const double first = (hint < 0.0) ? -1.0 : 1.0;
-          for (const double s : {first, -first})
-            {
-              const double den = W[0] - s * mu * W[1];
-              double       c[3];
-              c[0]            = -q[0] / den;
-              c[1]            = -s * mu * c[0];
-              c[2]            = 0.0;
-              const double uT = W[2] * c[0] + W[3] * c[1] + q[1];
-              if (den > 0.0 && c[0] <= 0.0 &&
-                  s * uT <= tol * (std::abs(W[2] * c[0]) + std::abs(q[1]) +
-                                   std::abs(W[3] * c[1])))
-                {
-                  r[0] = c[0];
-                  r[1] = c[1];
-                  hint = s;
-                  return 2;
-                }
-              best.offer(set, mu, W, q, c);
-            }
-          std::copy(best.r, best.r + 2, r);
-          return 3;
-        }
-
-      const Eigen::Matrix3d Wm =
-        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(W);
-      const Eigen::Vector3d qv(q[0], q[1], q[2]);
-
-      if (set.model() == ConeModel::polygon)
-        {
-          const auto &normals  = set.normals();
-          const auto &vertices = set.vertices();
-          const int   s        = static_cast<int>(normals.size());
-          int         start    = static_cast<int>(hint);
-          if (start < 0 || start >= 2 * s)
-            start = 0;
-          start %= s;
-          for (int k = 0; k < s; ++k)
-            {
-              const int              i = (start + k) % s;
-              const Eigen::Vector2d &n = normals[i];
-              // Facet i.
-              {
-                Eigen::Matrix4d K;
-                K << Wm(0, 0), Wm(0, 1), Wm(0, 2), 0.0, Wm(1, 0), Wm(1, 1),
-                  Wm(1, 2), n[0], Wm(2, 0), Wm(2, 1), Wm(2, 2), n[1], mu, n[0],
-                  n[1], 0.0;
-                const Eigen::Vector4d x = K.partialPivLu().solve(
-                  Eigen::Vector4d(-q[0], -q[1], -q[2], 0));
-                const double           c[3] = {x[0], x[1], x[2]};
-                const double           cap  = -mu * x[0];
-                const double           tl   = tol * (cap + qscale / Wm(0, 0));
-                const Eigen::Vector2d &na   = normals[(i + s - 1) % s];
-                const Eigen::Vector2d &nb   = normals[(i + 1) % s];
-                if (x[0] <= 0.0 && x[3] >= -tol * qscale &&
-                    na[0] * x[1] + na[1] * x[2] <= cap + tl &&
-                    nb[0] * x[1] + nb[1] * x[2] <= cap + tl)
-                  {
-                    std::copy(c, c + 3, r);
-                    hint = i;
-                    return 2;
-                  }
-                best.offer(set, mu, W, q, c);
-              }
-              // Vertex i (between facets i and i+1).
-              {
-                const Eigen::Vector2d &v = vertices[i];
-                const double           den =
-                  Wm(0, 0) - mu * (Wm(0, 1) * v[0] + Wm(0, 2) * v[1]);
-                const double N    = -q[0] / den;
-                const double c[3] = {N, -mu * N * v[0], -mu * N * v[1]};
-                if (den > 0.0 && N <= 0.0)
-                  {
-                    const Eigen::Vector3d u =
-                      Wm * Eigen::Vector3d(c[0], c[1], c[2]) + qv;
-                    const Eigen::Vector2d &nb = normals[(i + 1) % s];
-                    Eigen::Matrix2d        B;
-                    B << n[0], nb[0], n[1], nb[1];
-                    const Eigen::Vector2d ab =
-                      B.inverse() * Eigen::Vector2d(-u[1], -u[2]);
-                    const double tl =
-                      tol * (std::abs(u[1]) + std::abs(u[2]) + qscale);
-                    if (ab[0] >= -tl && ab[1] >= -tl)
-                      {
-                        std::copy(c, c + 3, r);
-                        hint = s + i;
-                        return 2;
-                      }
-                  }
-                best.offer(set, mu, W, q, c);
-              }
-            }
-          std::copy(best.r, best.r + 3, r);
-          return 3;
-        }
-
-      // Disc: find the slip direction.
-      const DiscSlip slip{W, q, mu};
-      auto           accept = [&](const double t) {
-        double f, df, along, p;
-        if (!slip.evaluate(t, f, df, along, p))
-          return false;
-        const double c[3] = {-p, mu * p * std::cos(t), mu * p * std::sin(t)};
-        best.offer(set, mu, W, q, c);
-        const double uscale = qscale + std::abs(W[0] * p);
-        if (along <= tol * uscale && std::abs(f) <= 1e-10 * uscale)
-          {
-            std::copy(c, c + 3, r);
-            hint = t;
-            return true;
-          }
-        return false;
-      };
-      // Newton from the hint and from the stick trial direction.
-      const double starts[2] = {hint, std::atan2(stick[2], stick[1])};
-      for (const double t0 : starts)
-        {
-          double t  = t0;
-          bool   ok = true;
-          for (unsigned int it = 0; it < 30; ++it)
-            {
-              double f, df, along, p;
-              if (!slip.evaluate(t, f, df, along, p) || df == 0.0)
-                {
-                  ok = false;
-                  break;
-                }
-              const double step = f / df;
-              t -= step;
-              if (std::abs(step) < 1e-15)
-                break;
-            }
-          if (ok && accept(t))
-            return 2;
-        }
-      // Sampling and bisection.
-      const unsigned int K = 64;
-      double             ft[K + 1];
-      bool               valid[K + 1];
-      for (unsigned int k = 0; k <= K; ++k)
-        {
-          double df, along, p;
-          valid[k] = slip.evaluate(2.0 * M_PI * k / K, ft[k], df, along, p);
-        }
-      for (unsigned int k = 0; k < K; ++k)
-        {
-          if (!valid[k] || !valid[k + 1] || (ft[k] > 0.0) == (ft[k + 1] > 0.0))
-            continue;
-          double a = 2.0 * M_PI * k / K, b = 2.0 * M_PI * (k + 1) / K;
-          double fa = ft[k];
-          for (unsigned int it = 0; it < 80 && b - a > 1e-16; ++it)
-            {
-              const double c = 0.5 * (a + b);
-              double       fc, df, along, p;
-              if (!slip.evaluate(c, fc, df, along, p))
-                break;
-              if ((fc > 0.0) == (fa > 0.0))
-                {
-                  a  = c;
-                  fa = fc;
-                }
-              else
-                b = c;
-            }
-          if (accept(0.5 * (a + b)))
-            return 2;
-        }
-      std::copy(best.r, best.r + 3, r);
-      return 3;
+      return LocalCoulomb(set, mu, W, q).solve(r, hint);
     }
   } // namespace contact
 } // namespace dpana

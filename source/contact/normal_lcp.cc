@@ -1,5 +1,7 @@
 #include <dpana/contact/method_of_multipliers.h>
+#include <dpana/contact/monitor.h>
 #include <dpana/contact/normal_lcp.h>
+#include <dpana/contact/projected_gauss_seidel.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -49,41 +51,31 @@ namespace dpana
                    Eigen::VectorXd       &N,
                    const unsigned int     max_sweeps)
     {
-      const Eigen::Index n     = N.size();
-      const double       omega = options.over_relaxation;
-      w.noalias()              = matrix * N;
-      w += right_hand_side;
-      bool fresh = true;
-      for (unsigned int sweep = 1; sweep <= max_sweeps; ++sweep)
-        {
-          double change = 0.0, size = 0.0;
-          for (Eigen::Index j = 0; j < n; ++j)
-            {
-              const double Nj = N[j];
-              const double Nnew =
-                std::min(0.0, Nj - omega * w[j] * inv_diag[j]);
-              const double delta = Nnew - Nj;
-              if (delta != 0.0)
-                {
-                  w += delta * matrix.col(j);
-                  N[j]   = Nnew;
-                  change = std::max(change, std::abs(delta));
-                }
-              size = std::max(size, std::abs(Nnew));
-            }
-          if (change <= options.tolerance * size)
-            {
-              if (fresh)
-                return static_cast<int>(sweep);
-              // Re-check with an exact gradient.
-              w.noalias() = matrix * N;
-              w += right_hand_side;
-              fresh = true;
-            }
-          else
-            fresh = false;
-        }
-      return -static_cast<int>(max_sweeps);
+      const Eigen::Index n       = N.size();
+      const double       omega   = options.over_relaxation;
+      auto               refresh = [&]() {
+        w.noalias() = matrix * N;
+        w += right_hand_side;
+      };
+      auto sweep = [&](double &change, double &size) {
+        for (Eigen::Index j = 0; j < n; ++j)
+          {
+            const double Nj    = N[j];
+            const double Nnew  = std::min(0.0, Nj - omega * w[j] * inv_diag[j]);
+            const double delta = Nnew - Nj;
+            if (delta != 0.0)
+              {
+                w += delta * matrix.col(j);
+                N[j]   = Nnew;
+                change = std::max(change, std::abs(delta));
+              }
+            size = std::max(size, std::abs(Nnew));
+          }
+      };
+      return projected_gauss_seidel(options.tolerance,
+                                    max_sweeps,
+                                    refresh,
+                                    sweep);
     }
 
 
@@ -94,16 +86,9 @@ namespace dpana
                          Eigen::VectorXd       &N,
                          Eigen::VectorXd       &alpha)
     {
-      InnerResult result;
       if (G.rows() == 0)
-        {
-          const int s = pgs(M, inverse_diagonal, b, N, options.max_iterations);
-          result.converged  = s > 0;
-          result.iterations = static_cast<unsigned int>(std::abs(s));
-          if (!result.converged)
-            result.message = "normal PGS: sweep limit reached";
-          return result;
-        }
+        return sweeps_result(
+          pgs(M, inverse_diagonal, b, N, options.max_iterations), "normal");
 
       // Method of multipliers for the equality rows.
       return solve_with_multipliers(
@@ -124,6 +109,93 @@ namespace dpana
 
 
     // @sect4{Primal-dual active set}
+    //
+    // The contact set guessed from the current point: C = { j : N_j - w_j /
+    // M_jj < 0 }, w = M N + b + G^T alpha.
+    void
+    NormalLcp::guess_contact_set(const Eigen::VectorXd &b,
+                                 const Eigen::VectorXd &N,
+                                 const Eigen::VectorXd &alpha,
+                                 std::vector<char>     &in_contact)
+    {
+      w.noalias() = M * N;
+      w += b;
+      if (G.rows() > 0)
+        w.noalias() += G.transpose() * alpha;
+      for (Eigen::Index j = 0; j < N.size(); ++j)
+        in_contact[j] = (N[j] - w[j] * inverse_diagonal[j] < 0.0);
+    }
+
+
+
+    // The factorisation depends on the contact set only. Within a splitting
+    // the set settles after a few outer iterations, so the factors of the
+    // last set are kept and reused when the set comes back (the solve is
+    // then the same to round-off).
+    bool
+    NormalLcp::factor_contact_set(const std::vector<Eigen::Index> &index)
+    {
+      if (factor_valid && index == factored_index)
+        return true;
+      const Eigen::Index k = static_cast<Eigen::Index>(index.size());
+      factor_valid         = false;
+      Mcc.resize(k, k);
+      for (Eigen::Index c = 0; c < k; ++c)
+        for (Eigen::Index a = 0; a < k; ++a)
+          Mcc(a, c) = M(index[a], index[c]);
+      llt.compute(Mcc);
+      if (llt.info() != Eigen::Success)
+        return false;
+      if (G.rows() > 0)
+        {
+          Gc.resize(G.rows(), k);
+          for (Eigen::Index a = 0; a < k; ++a)
+            Gc.col(a) = G.col(index[a]);
+          Y = llt.solve(Gc.transpose()); // M_CC^{-1} G_C^T
+          schur.compute(Gc * Y);
+        }
+      factored_index = index;
+      factor_valid   = true;
+      return true;
+    }
+
+
+
+    // The reduced equality-constrained problem on the contact set C,
+    // M_CC N_C + G_C^T alpha = -b_C, G_C N_C = e, N = 0 off C; false if
+    // M_CC is not positive definite.
+    bool
+    NormalLcp::solve_on_contact_set(const std::vector<Eigen::Index> &index,
+                                    const Eigen::VectorXd           &b,
+                                    const Eigen::VectorXd           &e,
+                                    Eigen::VectorXd                 &N,
+                                    Eigen::VectorXd                 &alpha)
+    {
+      const Eigen::Index k = static_cast<Eigen::Index>(index.size());
+      N.setZero();
+      if (k == 0)
+        return true;
+      if (!factor_contact_set(index))
+        return false;
+      Eigen::VectorXd bc(k), x;
+      for (Eigen::Index a = 0; a < k; ++a)
+        bc[a] = b[index[a]];
+      if (G.rows() > 0)
+        {
+          const Eigen::VectorXd z  = llt.solve(-bc);
+          const Eigen::VectorXd rs = Gc * z - e;
+          alpha                    = schur.solve(rs);
+          x                        = z - Y * alpha;
+        }
+      else
+        x = llt.solve(-bc);
+      for (Eigen::Index a = 0; a < k; ++a)
+        N[index[a]] = x[a];
+      return true;
+    }
+
+
+
     InnerResult
     NormalLcp::solve_active_set(const Eigen::VectorXd &b,
                                 const Eigen::VectorXd &e,
@@ -137,94 +209,35 @@ namespace dpana
         alpha = Eigen::VectorXd::Zero(m);
 
       std::vector<char> in_contact(n), next(n);
-      auto              update_set = [&](std::vector<char> &set) {
-        w.noalias() = M * N;
-        w += b;
-        if (m > 0)
-          w.noalias() += G.transpose() * alpha;
-        for (Eigen::Index j = 0; j < n; ++j)
-          set[j] = (N[j] - w[j] * inverse_diagonal[j] < 0.0);
-      };
-      update_set(in_contact);
-
+      guess_contact_set(b, N, alpha, in_contact);
       std::set<std::vector<char>> visited;
       std::vector<Eigen::Index>   index;
-      Eigen::VectorXd             bc, x;
       unsigned int                restarts = 0;
-
       for (unsigned int step = 1; step <= options.max_iterations; ++step)
         {
-          // Gather the contact set and solve the reduced equality-constrained
-          // problem M_CC N_C + G_C^T alpha = -b_C, G_C N_C = e.
+          result.iterations = step;
           index.clear();
           for (Eigen::Index j = 0; j < n; ++j)
             if (in_contact[j])
               index.push_back(j);
-          const Eigen::Index k = static_cast<Eigen::Index>(index.size());
-          if (m > 0 && k == 0)
+          if (m > 0 && index.empty())
             {
               // Equality rows need contacts to carry them: start from all.
               std::fill(in_contact.begin(), in_contact.end(), 1);
               continue;
             }
-          bc.resize(k);
-          for (Eigen::Index a = 0; a < k; ++a)
-            bc[a] = b[index[a]];
-          N.setZero();
-          if (k > 0)
+          if (!solve_on_contact_set(index, b, e, N, alpha))
             {
-              // The factorisation depends on the contact set only. Within a
-              // splitting the set settles after a few outer iterations, so
-              // the factors of the last set are kept and reused when the set
-              // comes back (the solve is then the same to round-off).
-              if (!factor_valid || index != factored_index)
-                {
-                  factor_valid = false;
-                  Mcc.resize(k, k);
-                  for (Eigen::Index c = 0; c < k; ++c)
-                    for (Eigen::Index a = 0; a < k; ++a)
-                      Mcc(a, c) = M(index[a], index[c]);
-                  llt.compute(Mcc);
-                  if (llt.info() != Eigen::Success)
-                    {
-                      result.message =
-                        "normal active set: M_CC not positive definite";
-                      result.iterations = step;
-                      return result;
-                    }
-                  if (m > 0)
-                    {
-                      Gc.resize(m, k);
-                      for (Eigen::Index a = 0; a < k; ++a)
-                        Gc.col(a) = G.col(index[a]);
-                      Y = llt.solve(Gc.transpose()); // M_CC^{-1} G_C^T
-                      schur.compute(Gc * Y);
-                    }
-                  factored_index = index;
-                  factor_valid   = true;
-                }
-              if (m > 0)
-                {
-                  const Eigen::VectorXd z  = llt.solve(-bc);
-                  const Eigen::VectorXd rs = Gc * z - e;
-                  alpha                    = schur.solve(rs);
-                  x                        = z - Y * alpha;
-                }
-              else
-                x = llt.solve(-bc);
-              for (Eigen::Index a = 0; a < k; ++a)
-                N[index[a]] = x[a];
+              result.message = "normal active set: M_CC not positive definite";
+              return result;
             }
-          update_set(next);
+          guess_contact_set(b, N, alpha, next);
           const bool equalities_hold =
-            (m == 0) ||
-            ((G * N - e).lpNorm<Eigen::Infinity>() <=
-             1e-9 * (G.lpNorm<Eigen::Infinity>() * N.lpNorm<Eigen::Infinity>() +
-                     e.lpNorm<Eigen::Infinity>()));
+            (m == 0) || ((G * N - e).lpNorm<Eigen::Infinity>() <=
+                         1e-9 * equality_scale(G, e, N));
           if (next == in_contact && equalities_hold)
             {
-              result.converged  = true;
-              result.iterations = step;
+              result.converged = true;
               return result;
             }
           if (!visited.insert(in_contact).second || next == in_contact)
@@ -234,8 +247,7 @@ namespace dpana
               // guessed again.
               if (++restarts > 20)
                 {
-                  result.iterations = step;
-                  result.message    = "normal active set: cycling";
+                  result.message = "normal active set: cycling";
                   return result;
                 }
               Eigen::VectorXd a      = alpha;
@@ -244,7 +256,7 @@ namespace dpana
               solve_pgs(b, e, N, a);
               options = saved;
               alpha   = a;
-              update_set(next);
+              guess_contact_set(b, N, alpha, next);
               visited.clear();
             }
           in_contact.swap(next);

@@ -1,5 +1,6 @@
 #include <dpana/contact/problem.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -7,6 +8,60 @@ namespace dpana
 {
   namespace contact
   {
+    namespace
+    {
+      // The one list of the cone models, their names and the dimension they
+      // belong to (the default of each dimension first).
+      struct ConeModelName
+      {
+        ConeModel    cone;
+        const char  *name;
+        unsigned int dim;
+      };
+      const std::array<ConeModelName, 3> cone_model_table = {
+        {{ConeModel::interval, "interval", 2},
+         {ConeModel::disc, "disc", 3},
+         {ConeModel::polygon, "polygon", 3}}};
+    } // namespace
+
+
+
+    std::string
+    to_string(const ConeModel cone)
+    {
+      for (const auto &entry : cone_model_table)
+        if (cone == entry.cone)
+          return entry.name;
+      return "unknown";
+    }
+
+
+
+    ConeModel
+    cone_model_from_string(const std::string &name)
+    {
+      for (const auto &entry : cone_model_table)
+        if (name == entry.name)
+          return entry.cone;
+      throw std::invalid_argument("contact problem: unknown cone model '" +
+                                  name + "' (expected " + cone_model_names(2) +
+                                  " in 2D, " + cone_model_names(3) + " in 3D)");
+    }
+
+
+
+    std::string
+    cone_model_names(const unsigned int dim)
+    {
+      std::string names;
+      for (const auto &entry : cone_model_table)
+        if (entry.dim == dim)
+          names += (names.empty() ? "" : "|") + std::string(entry.name);
+      return names;
+    }
+
+
+
     void
     ContactProblem::validate() const
     {

@@ -3,27 +3,40 @@
 #include <dpana/contact/solver.h>
 #include <dpana/contact/splitting.h>
 
+#include <array>
 #include <stdexcept>
+#include <utility>
 
 namespace dpana
 {
   namespace contact
   {
+    namespace
+    {
+      // The one list of the solvers and their names, the default first.
+      const std::array<std::pair<SolverType, const char *>, 4> solver_names = {
+        {{SolverType::splitting_active_set, "splitting_active_set"},
+         {SolverType::splitting_pgs, "splitting_pgs"},
+         {SolverType::nsgs, "nsgs"},
+         {SolverType::alart_curnier, "alart_curnier"}}};
+    } // namespace
+
+
+
     SolverType
     solver_type_from_string(const std::string &name)
     {
-      if (name == "splitting_pgs")
-        return SolverType::splitting_pgs;
-      if (name == "splitting_active_set")
-        return SolverType::splitting_active_set;
-      if (name == "nsgs")
-        return SolverType::nsgs;
-      if (name == "alart_curnier")
-        return SolverType::alart_curnier;
-      throw std::invalid_argument(
-        "contact solver: unknown solver type '" + name +
-        "' (expected splitting_pgs, splitting_active_set, nsgs or "
-        "alart_curnier)");
+      for (const auto &entry : solver_names)
+        if (name == entry.second)
+          return entry.first;
+      std::string expected;
+      for (std::size_t i = 0; i < solver_names.size(); ++i)
+        expected += std::string(i == 0                       ? "" :
+                                i + 1 == solver_names.size() ? " or " :
+                                                               ", ") +
+                    solver_names[i].second;
+      throw std::invalid_argument("contact solver: unknown solver type '" +
+                                  name + "' (expected " + expected + ")");
     }
 
 
@@ -31,18 +44,21 @@ namespace dpana
     std::string
     to_string(const SolverType type)
     {
-      switch (type)
-        {
-          case SolverType::splitting_pgs:
-            return "splitting_pgs";
-          case SolverType::splitting_active_set:
-            return "splitting_active_set";
-          case SolverType::nsgs:
-            return "nsgs";
-          case SolverType::alart_curnier:
-            return "alart_curnier";
-        }
+      for (const auto &entry : solver_names)
+        if (type == entry.first)
+          return entry.second;
       return "unknown";
+    }
+
+
+
+    std::string
+    solver_type_names()
+    {
+      std::string names;
+      for (const auto &entry : solver_names)
+        names += (names.empty() ? "" : "|") + std::string(entry.second);
+      return names;
     }
 
 

@@ -27,8 +27,9 @@
 // NSGS sweeps.
 //
 // Start: initial_r, or the frictionless solution is NOT computed: r = 0.
-// Stops when the shared residual (residual.h) is <= tolerance and
-// ||G r - e||_inf <= tolerance (||G||_inf ||r||_inf + ||e||_inf).
+// Stops (the shared tests of monitor.h) when the shared residual
+// (residual.h) is <= tolerance and ||G r - e||_inf <= tolerance (||G||_inf
+// ||r||_inf + ||e||_inf).
 #ifndef dpana_contact_alart_curnier_h
 #define dpana_contact_alart_curnier_h
 

@@ -43,6 +43,7 @@
 
 #include <Eigen/Dense>
 
+#include <string>
 #include <vector>
 
 namespace dpana
@@ -92,6 +93,17 @@ namespace dpana
           Eigen::VectorXd           &T,
           unsigned int               max_sweeps);
 
+      // One block of a sweep (the exact local minimiser, relaxed, and the
+      // column update of w), raising change and size.
+      void
+      block_step(const Eigen::MatrixXd     &matrix,
+                 const std::vector<double> &blocks,
+                 const Eigen::VectorXd     &radius,
+                 const unsigned int         j,
+                 Eigen::VectorXd           &T,
+                 double                    &change,
+                 double                    &size);
+
       // Natural map F (size q + m) at (T, beta); records the regions.
       void
       natural_map(const Eigen::VectorXd &c,
@@ -114,11 +126,47 @@ namespace dpana
       Eigen::VectorXd        w, rhs, y;
       std::vector<int>       region;
 
+      // The steps of solve_active_set (friction_qp.cc): a feasible start,
+      // the stopping test, the eigen-directions of the projection
+      // derivatives and the Newton step on the free ones, with the Schur
+      // complement of the equality rows (returns dbeta).
+      void
+      project_onto_sets(const Eigen::VectorXd &radius,
+                        Eigen::VectorXd       &T) const;
+
+      bool
+      active_set_converged(const Eigen::VectorXd &F,
+                           const Eigen::VectorXd &radius,
+                           const Eigen::VectorXd &e,
+                           const Eigen::VectorXd &T) const;
+
+      void
+      newton_directions(const Eigen::VectorXd &radius,
+                        const Eigen::VectorXd &F,
+                        Eigen::VectorXd       &dx);
+
+      std::string
+      newton_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx);
+
+      Eigen::VectorXd
+      equality_step(const Eigen::VectorXd &violation,
+                    const Eigen::VectorXd &dx);
+
       // Factor the Newton matrix H of the current directions (directly,
-      // or by blocks with the factors kept per partition; see the .cc
-      // file); false if it is not numerically positive definite.
+      // or by blocks with the factors kept per partition; see
+      // friction_qp_newton_matrix.cc); false if it is not numerically
+      // positive definite.
       bool
       factor_newton_matrix();
+
+      bool
+      factor_directly();
+
+      bool
+      factor_partition();
+
+      bool
+      factor_slip_schur();
 
       // H^{-1} R for a right-hand side R with one row per direction.
       Eigen::MatrixXd
@@ -139,7 +187,7 @@ namespace dpana
       };
       std::vector<Direction> directions;
       std::vector<char>      partition, previous_partition;
-      Eigen::VectorXd        g, x;
+      Eigen::VectorXd        g, x, v; // v = M dT_fixed
       Eigen::MatrixXd        B;
       // Direct factorisation: M Z, H, Cholesky of H.
       Eigen::MatrixXd             MZ, H;

@@ -141,6 +141,27 @@ namespace dpana
       }
 
     private:
+      // The cases of project_cone() and minimise() (see friction_set.cc).
+      void
+      project_round_cone(const double mu, const double *x, double *p) const;
+
+      void
+      project_polygon_cone(const double mu, const double *x, double *p) const;
+
+      void
+      minimise_disc(const double  c,
+                    const double *W,
+                    const double *g,
+                    double       *T) const;
+
+      void
+      minimise_polygon(const double  c,
+                       const double *W,
+                       const double *g,
+                       const double *inverse,
+                       const double *T0,
+                       double       *T) const;
+
       unsigned int                 dim;
       ConeModel                    cone;
       unsigned int                 sides;

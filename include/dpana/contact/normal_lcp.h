@@ -95,6 +95,27 @@ namespace dpana
           Eigen::VectorXd       &N,
           unsigned int           max_sweeps);
 
+      // The steps of solve_active_set: the contact set guessed from
+      // (N, alpha), the factors of M_CC (and of the Schur complement of the
+      // equality rows) for a set, kept while it repeats, and the solution of
+      // the reduced problem on a set (false if M_CC is not positive
+      // definite).
+      void
+      guess_contact_set(const Eigen::VectorXd &b,
+                        const Eigen::VectorXd &N,
+                        const Eigen::VectorXd &alpha,
+                        std::vector<char>     &in_contact);
+
+      bool
+      factor_contact_set(const std::vector<Eigen::Index> &index);
+
+      bool
+      solve_on_contact_set(const std::vector<Eigen::Index> &index,
+                           const Eigen::VectorXd           &b,
+                           const Eigen::VectorXd           &e,
+                           Eigen::VectorXd                 &N,
+                           Eigen::VectorXd                 &alpha);
+
       const Eigen::MatrixXd &M;
       const Eigen::MatrixXd &G;
       InnerOptions           options;

@@ -16,9 +16,10 @@
 // just made, the residual is evaluated there, and convergence requires in
 // addition ||G r - e||_inf <= tolerance (||G||_inf ||r||_inf + ||e||_inf).
 //
-// Stops when the shared residual is <= tolerance (after a check with a
-// freshly computed u), when max_iterations sweeps are done, or on a stall
-// (no new residual minimum, by a factor 0.99, for stall_iterations sweeps).
+// Stops (the shared tests of monitor.h) when the shared residual is <=
+// tolerance (after a check with a freshly computed u), when max_iterations
+// sweeps are done, on a non-finite residual, or on a stall (no new residual
+// minimum, by a factor 0.99, for stall_iterations sweeps).
 // With adaptive_relaxation (the default) a stall first halves omega, up to
 // six times (omega >= omega_0 / 64), and the sweeps go on: exact local
 // solves can cycle for large mu (the local problems, whose solution is taken

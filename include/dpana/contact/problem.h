@@ -55,6 +55,21 @@ namespace dpana
       disc
     };
 
+    // The name of a cone model: "interval", "disc" or "polygon".
+    std::string
+    to_string(const ConeModel cone);
+
+    // The cone model of a name (see to_string()); throws
+    // std::invalid_argument for anything else.
+    ConeModel
+    cone_model_from_string(const std::string &name);
+
+    // The names of the cone models of dimension dim, separated by '|', the
+    // default first: "interval" in 2D, "disc|polygon" in 3D (the pattern of
+    // a ParameterHandler Selection).
+    std::string
+    cone_model_names(const unsigned int dim);
+
     struct ContactProblem
     {
       // Space dimension d, 2 or 3.

@@ -1,5 +1,6 @@
 // The driver of the contact solvers of dpana: one problem (problem.h), one
-// options structure, one function, one error measure (residual.h).
+// options structure, one function, one error measure (residual.h) with one
+// stopping and stall test (monitor.h).
 //
 // Solvers (see doc/contact_solvers.md for the mathematics):
 //   - splitting_pgs, splitting_active_set: the D-PANA splitting of the seeds
@@ -34,13 +35,20 @@ namespace dpana
       alart_curnier         // semismooth Newton on Alart-Curnier equations
     };
 
-    // "splitting_pgs", "splitting_active_set", "nsgs", "alart_curnier";
-    // throws std::invalid_argument for anything else.
+    // The solver of a name ("splitting_active_set", "splitting_pgs", "nsgs",
+    // "alart_curnier"); throws std::invalid_argument for anything else.
     SolverType
     solver_type_from_string(const std::string &name);
 
+    // The name of a solver, as solver_type_from_string() reads it.
     std::string
     to_string(SolverType type);
+
+    // Every solver name, separated by '|', the default first:
+    // "splitting_active_set|splitting_pgs|nsgs|alart_curnier" (the pattern
+    // of a ParameterHandler Selection).
+    std::string
+    solver_type_names();
 
     struct SolverOptions
     {

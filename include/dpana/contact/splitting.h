@@ -28,9 +28,9 @@
 // are solved to clamp(0.1 * last outer residual, inner_tolerance, 1e-4);
 // should that stall the iterates, the remaining steps use inner_tolerance.
 //
-// Stopping: converged when the shared residual (residual.h) is <= tolerance
-// and, with equality rows, ||G r - e||_inf <= tolerance (||G||_inf ||r||_inf
-// + ||e||_inf).
+// Stopping (the shared tests of monitor.h): converged when the shared
+// residual (residual.h) is <= tolerance and, with equality rows,
+// ||G r - e||_inf <= tolerance (||G||_inf ||r||_inf + ||e||_inf).
 // The relative change ||r_k - r_{k-1}||_inf / ||r_k||_inf is recorded; if it
 // drops below 1e-15 while the residual is still above tolerance the loop
 // stops as "stagnated" (the inner tolerance limits the attainable residual).

@@ -22,10 +22,7 @@ namespace
   name(const Case &c)
   {
     return std::to_string(c.dim) + "D n=" + std::to_string(c.n) +
-           " mu=" + std::to_string(c.mu) + " cone=" +
-           (c.cone == ConeModel::interval ? "interval" :
-            c.cone == ConeModel::disc     ? "disc" :
-                                            "polygon");
+           " mu=" + std::to_string(c.mu) + " cone=" + to_string(c.cone);
   }
 
   void

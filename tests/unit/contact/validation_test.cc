@@ -123,6 +123,22 @@ TEST(Validation, Options)
   EXPECT_EQ(solver_type_from_string("nsgs"), SolverType::nsgs);
   for (const SolverType t : all_solvers())
     EXPECT_EQ(solver_type_from_string(to_string(t)), t);
+  EXPECT_EQ(solver_type_names(),
+            "splitting_active_set|splitting_pgs|nsgs|alart_curnier");
   const Eigen::VectorXd wrong = Eigen::VectorXd::Zero(4);
   expect_error([&]() { solve(p, SolverOptions(), &wrong); }, "initial_r");
+}
+
+
+
+// The names of the cone models: one table gives to_string(),
+// cone_model_from_string() and the Selection pattern of each dimension.
+TEST(Validation, ConeModelNames)
+{
+  EXPECT_EQ(cone_model_names(2), "interval");
+  EXPECT_EQ(cone_model_names(3), "disc|polygon");
+  for (const ConeModel cone :
+       {ConeModel::interval, ConeModel::disc, ConeModel::polygon})
+    EXPECT_EQ(cone_model_from_string(to_string(cone)), cone);
+  expect_error([]() { cone_model_from_string("square"); }, "square");
 }
