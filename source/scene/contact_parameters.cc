@@ -20,7 +20,7 @@ namespace dpana
                         "Coulomb friction coefficient mu (dimensionless).");
       prm.declare_entry("Cone model",
                         "disc",
-                        Selection("disc|polygon"),
+                        Selection(contact::cone_model_names(3)),
                         "3D friction set: the exact disc ||T|| <= -mu N, or "
                         "the polygon of the reference formulation, "
                         "circumscribed about the disc.");
@@ -52,11 +52,10 @@ namespace dpana
     SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry(
-        "Solver",
-        "splitting_active_set",
-        Selection("splitting_active_set|splitting_pgs|nsgs|alart_curnier"),
-        "Contact solver (doc/contact_solvers.md).");
+      prm.declare_entry("Solver",
+                        "splitting_active_set",
+                        Selection(contact::solver_type_names()),
+                        "Contact solver (doc/contact_solvers.md).");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Double(0.),
