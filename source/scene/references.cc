@@ -183,7 +183,8 @@ namespace dpana
               out.str(),
               {{"N", uniform_normal_traction},
                {"max_N_error", eN / scale},
-               {"max_T", eT / scale}}};
+               {"max_T", eT / scale}},
+              ""};
     }
 
 
@@ -225,7 +226,8 @@ namespace dpana
           {"N_max", N_H},
           {"a_error", relative(a, a_H)},
           {"a_centroid_error", relative(summary.half_width_centroid, a_H)},
-          {"N_max_error", relative(N, N_H)}}}};
+          {"N_max_error", relative(N, N_H)}},
+         ""}};
       if (table_half_width > 0 || table_max_pressure > 0)
         {
           std::ostringstream t;
@@ -235,13 +237,13 @@ namespace dpana
             << " MPa; relative differences: a " << std::showpos
             << relative(a, table_half_width) << ", N_max "
             << relative(N, table_max_pressure);
-          c.push_back(
-            {"published table",
-             t.str(),
-             {{"a", table_half_width},
-              {"N_max", table_max_pressure},
-              {"a_difference", relative(a, table_half_width)},
-              {"N_max_difference", relative(N, table_max_pressure)}}});
+          c.push_back({"published table",
+                       t.str(),
+                       {{"a", table_half_width},
+                        {"N_max", table_max_pressure},
+                        {"a_difference", relative(a, table_half_width)},
+                        {"N_max_difference", relative(N, table_max_pressure)}},
+                       ""});
         }
       return c;
     }
