@@ -1,0 +1,419 @@
+// ---------------------------------------------------------------------------
+// dpana tutorial step 7: three dimensions.
+// ---------------------------------------------------------------------------
+
+// @sect3{Include files}
+//
+// The whole run of a scene (assembly, contact surface, condensation, contact
+// solve, recovery, output) is one object, dpana::scene::Scene. Its parameters
+// are declared by dpana::scene::declare_parameters() from the outline of the
+// run (dimension, number of bodies, contact or not), then read either from a
+// parameter file (dpana::parameters::parse_file) or from text made here.
+#include <dpana/parameters/parameters.h>
+#include <dpana/scene/run.h>
+#include <dpana/scene/scene.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace step7
+{
+  using namespace dpana;
+
+  // @sect3{Running a scene}
+  //
+  // A scene is run in three lines once its parameters are known. The
+  // outline tells declare_parameters() which subsections exist; the
+  // parameters then come from a file of the repository's prm/ folder (the
+  // receding block) or from text built by this program (the friction
+  // polygon). The run is quiet, writes no VTU and no plot of its own (this
+  // program draws its figures), and leaves its contact.csv in @p directory.
+  template <int dim>
+  void
+  configure(dealii::ParameterHandler &prm, const std::string &directory)
+  {
+    prm.enter_subsection("Output");
+    prm.set("Directory", directory);
+    prm.set("Write VTU", false);
+    prm.set("Plot", false);
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  run_file(scene::Scene<dim> &scene,
+           const std::string &file,
+           const std::string &directory)
+  {
+    dealii::ParameterHandler prm;
+    scene::declare_parameters(prm, parameters::scan_file(file));
+    parameters::parse_file(prm, file);
+    configure<dim>(prm, directory);
+    scene.parse_parameters(prm, 1, true);
+    scene.set_quiet(true);
+    scene.run(true);
+  }
+
+  template <int dim>
+  void
+  run_text(scene::Scene<dim> &scene, const std::string &text)
+  {
+    dealii::ParameterHandler prm;
+    scene::declare_parameters(prm, {dim, 1, true});
+    prm.parse_input_from_string(text);
+    scene.parse_parameters(prm, 1, true);
+    scene.set_quiet(true);
+    scene.run(false);
+  }
+
+  // Every run must have converged before its numbers mean anything.
+  template <int dim>
+  void
+  check_converged(const scene::Scene<dim> &scene, const std::string &what)
+  {
+    const auto &result = scene.summary().result;
+    AssertThrow(result.converged,
+                dealii::ExcMessage(what + ": the contact solver did not " +
+                                   "converge: " + result.message));
+  }
+
+  // The tangential traction of element j as a vector of space: the
+  // components T_k are given in the frame (tau_1, tau_2) of the element.
+  template <int dim>
+  dealii::Tensor<1, dim>
+  tangential_vector(const scene::Scene<dim> &scene, const unsigned int j)
+  {
+    dealii::Tensor<1, dim> T;
+    for (unsigned int k = 0; k + 1 < dim; ++k)
+      T += scene.tangential_traction(j, k) *
+           scene.surface(0).element(j).tangents[k];
+    return T;
+  }
+
+  // @sect3{The 3D block against the plane solution}
+  //
+  // The block of the reference formulation (chapter 4, section 4.2.2) has
+  // the cross-section 80 x 40 mm of the plane problem and a length L; by
+  // double symmetry a quarter 40 x 40 x L/2 is meshed. With Poisson's ratio
+  // nu = 0 and the end face free, the plane stress field of the 2D block is
+  // also a solution of the 3D problem: sigma_zz = 0 needs no strain
+  // eps_xx, eps_yy to be coupled with eps_zz. The contact tractions of the
+  // 3D block must therefore be the 2D ones on every row of contact elements,
+  // whatever L. The 2D run is made first; each 3D run is compared with it
+  // element by element: every 3D element (s, t) is matched to the 2D
+  // element of the same s, and the largest difference of N and of the
+  // friction traction along x is divided by the largest 2D pressure.
+  struct PlaneSolution
+  {
+    std::vector<double> s, N, Tx;
+
+    unsigned int
+    index_of(const double s_3d) const
+    {
+      for (unsigned int i = 0; i < s.size(); ++i)
+        if (std::abs(s[i] - s_3d) < 1e-6)
+          return i;
+      AssertThrow(false,
+                  dealii::ExcMessage("no 2D element at s = " +
+                                     std::to_string(s_3d)));
+      return 0;
+    }
+  };
+
+  PlaneSolution
+  plane_solution(const std::string &prm_dir)
+  {
+    scene::Scene<2> scene;
+    run_file(scene,
+             prm_dir + "/receding_2d_nu0_mu1.prm",
+             "output/receding_2d_nu0_mu1");
+    check_converged(scene, "2D block");
+    PlaneSolution plane;
+    for (unsigned int j = 0; j < scene.surface(0).n_elements(); ++j)
+      {
+        plane.s.push_back(scene.surface(0).element(j).s);
+        plane.N.push_back(scene.normal_traction(j));
+        plane.Tx.push_back(tangential_vector(scene, j)[0]);
+      }
+    return plane;
+  }
+
+  struct BlockError
+  {
+    double       length = 0, error_N = 0, error_T = 0, spread_N = 0;
+    unsigned int n_elements = 0, iterations = 0;
+    double       seconds = 0;
+  };
+
+  // The spread of N along t (between rows of the same s) tells how far the
+  // 3D solution is from being independent of z, apart from its difference
+  // with the 2D mesh.
+  BlockError
+  compare_block(const std::string   &prm_dir,
+                const unsigned int   L,
+                const PlaneSolution &plane,
+                std::ofstream       &csv)
+  {
+    const std::string name = "receding_3d_L" + std::to_string(L);
+    scene::Scene<3>   scene;
+    run_file(scene, prm_dir + "/" + name + ".prm", "output/" + name);
+    check_converged(scene, name);
+
+    double p_max = 0;
+    for (const double N : plane.N)
+      p_max = std::max(p_max, -N);
+    BlockError          e;
+    std::vector<double> row_min(plane.s.size(), 1e300);
+    std::vector<double> row_max(plane.s.size(), -1e300);
+    e.length     = L;
+    e.n_elements = scene.surface(0).n_elements();
+    e.iterations = scene.summary().result.iterations;
+    for (unsigned int j = 0; j < e.n_elements; ++j)
+      {
+        const auto        &element = scene.surface(0).element(j);
+        const unsigned int i       = plane.index_of(element.s);
+        const double       N       = scene.normal_traction(j);
+        const double       Tx      = tangential_vector(scene, j)[0];
+        e.error_N  = std::max(e.error_N, std::abs(N - plane.N[i]) / p_max);
+        e.error_T  = std::max(e.error_T, std::abs(Tx - plane.Tx[i]) / p_max);
+        row_min[i] = std::min(row_min[i], N);
+        row_max[i] = std::max(row_max[i], N);
+        csv << L << ',' << element.s << ',' << element.t << ',' << N << ','
+            << Tx << '\n';
+      }
+    for (unsigned int i = 0; i < plane.s.size(); ++i)
+      e.spread_N = std::max(e.spread_N, (row_max[i] - row_min[i]) / p_max);
+    for (const auto &phase : scene.phases().timings())
+      e.seconds += phase.second;
+    return e;
+  }
+
+  // @sect3{The friction polygon against the exact disc}
+  //
+  // In 3D the Coulomb set of an element is the disc ||T|| <= -mu N. The
+  // reference formulation replaces it by the regular polygon with s sides
+  // circumscribed about the disc (chapter 2), which turns the friction
+  // problem into a quadratic programme with linear constraints. The polygon
+  // touches the disc at the s midpoints of its sides (the facet normals
+  // a_i = 2 (i - 1) pi / s) and reaches out to the radius 1 / cos(pi / s) at
+  // its vertices: in the direction of a vertex, the friction that the
+  // polygon lets an element carry exceeds Coulomb's by
+  // @f[
+  //   \epsilon_s = \frac{1}{\cos(\pi / s)} - 1 .
+  // @f]
+  // The error only shows when the contact slips, and only when it slips in
+  // the direction of a vertex. The problem made here forces exactly that: a
+  // cube of side 20 mm (nu = 0) is pressed onto the rigid plane by a
+  // prescribed displacement of 0.01 mm of its top face, which is at the
+  // same time dragged tangentially by 0.1 mm, ten times what the cube can
+  // take in stick. The whole base slips. Where the slip direction lies
+  // within pi / s of a vertex direction, the traction sits on that vertex,
+  // so the friction resultant divided by mu times the normal resultant
+  // is 1 + epsilon_s exactly, while the disc gives 1 (or a hair less, where
+  // the slip directions fan out). Dragging along a facet normal gives 1 for
+  // every polygon.
+  //
+  // The frame of the elements is (n, tau_1, tau_2) = (-y, x, z) (see
+  // ContactSurface::tangential_frame), so the angle phi of the drag is
+  // measured from x towards z. Friction opposes the slip: its direction
+  // is phi + pi, a vertex of the polygon when phi = pi / s (s even).
+  std::string
+  dragged_cube(const std::string &cone,
+               const unsigned int sides,
+               const double       phi)
+  {
+    const double       mu = 0.5, drag = 0.1;
+    std::ostringstream text;
+    text << std::setprecision(17)
+         << "subsection Body 1\n"
+            "  subsection Geometry\n"
+            "    set Type = box\n"
+            "    subsection Box\n"
+            "      set Lower corner = 0, 0, 0\n"
+            "      set Upper corner = 20, 20, 20\n"
+            "      set Subdivisions = 8, 4, 8\n"
+            "    end\n"
+            "  end\n"
+            "  subsection Material\n"
+            "    set Young's modulus = 100000\n"
+            "    set Poisson's ratio = 0\n"
+            "  end\n"
+            "  subsection Boundary conditions\n"
+            "    set Prescribed displacement = top: x = "
+         << drag * std::cos(phi) << ", y = -0.01, z = " << drag * std::sin(phi)
+         << "\n"
+            "  end\n"
+            "end\n"
+            "subsection Contact\n"
+            "  set Boundary 1           = bottom\n"
+            "  set Contact direction    = 0, -1, 0\n"
+            "  set Friction coefficient = "
+         << mu << "\n  set Cone model           = " << cone
+         << "\n  set Polygon sides        = " << sides << "\nend\n";
+    return text.str();
+  }
+
+  // The friction capacity actually used: |sum_j T_j |Gamma_j|| divided by mu
+  // sum_j (-N_j) |Gamma_j|, and the angle of the friction resultant in the
+  // plane (x, z).
+  struct Capacity
+  {
+    double ratio = 0, angle = 0;
+  };
+
+  Capacity
+  friction_capacity(const scene::Scene<3> &scene, const double mu)
+  {
+    dealii::Tensor<1, 3> F;
+    double               P = 0;
+    for (unsigned int j = 0; j < scene.surface(0).n_elements(); ++j)
+      {
+        const double area = scene.surface(0).element(j).area;
+        F += area * tangential_vector(scene, j);
+        P -= area * scene.normal_traction(j);
+      }
+    return {F.norm() / (mu * P), std::atan2(F[2], F[0])};
+  }
+
+  struct PolygonRun
+  {
+    unsigned int sides;
+    double       phi, measured, predicted, seconds;
+  };
+
+  PolygonRun
+  run_polygon(const std::string &cone, const unsigned int sides, double phi)
+  {
+    scene::Scene<3> scene;
+    run_text(scene, dragged_cube(cone, std::max(sides, 3u), phi));
+    check_converged(scene, "dragged cube");
+    const Capacity c = friction_capacity(scene, 0.5);
+    // The friction resultant must oppose the drag.
+    AssertThrow(std::abs(std::remainder(c.angle - phi - M_PI, 2 * M_PI)) < 1e-3,
+                dealii::ExcMessage("the friction does not oppose the drag"));
+    const bool   on_vertex = (cone == "polygon" && phi > 0);
+    const double predicted = on_vertex ? 1 / std::cos(M_PI / sides) - 1 : 0.;
+    double       seconds   = 0;
+    for (const auto &phase : scene.phases().timings())
+      seconds += phase.second;
+    return {cone == "disc" ? 0 : sides, phi, c.ratio - 1, predicted, seconds};
+  }
+} // namespace step7
+
+// @sect3{The main program}
+//
+// run() of deal.II's tutorials is here main() itself: the plane solution,
+// the three block lengths against it, then the polygons against the disc,
+// each as a table on the screen and as CSV data in output/ for the plot
+// script of this folder. The headline numbers are checked at the end:
+//
+// - every 3D element of every length within 3% of max |N| of the plane
+//   solution (what the reference formulation's mesh of the block gives:
+//   the tetrahedra and the triangles of the 2D mesh do not carry the same
+//   discretisation error, and this difference, not the length, is what is
+//   measured);
+// - the excess of friction capacity of every polygon dragged towards a
+//   vertex equal to 1 / cos(pi / s) - 1 within 1e-6 (relative), the disc
+//   and the polygon dragged along a facet normal without excess (below
+//   1e-6).
+int
+main()
+{
+  using namespace step7;
+  try
+    {
+      const std::string prm_dir = std::string(DPANA_STEP_DIR) + "/../../../prm";
+      std::filesystem::create_directories("output");
+
+      // The plane solution and the three lengths.
+      const PlaneSolution plane = plane_solution(prm_dir);
+      {
+        std::ofstream csv("output/plane.csv");
+        csv << "s,N,Tx\n";
+        for (unsigned int i = 0; i < plane.s.size(); ++i)
+          csv << plane.s[i] << ',' << plane.N[i] << ',' << plane.Tx[i] << '\n';
+      }
+      std::ofstream csv("output/block_3d.csv");
+      csv << "L,s,t,N,Tx\n";
+      std::vector<BlockError> blocks;
+      for (const unsigned int L : {80u, 160u, 320u})
+        blocks.push_back(compare_block(prm_dir, L, plane, csv));
+      csv.close();
+
+      std::cout << "3D receding block (nu = 0, mu = 1) against the plane "
+                   "solution\n"
+                << "    L  elements  iterations  max|N-N2D|/p  max|Tx-Tx2D|/p"
+                   "  spread of N along t   time (s)\n";
+      for (const BlockError &e : blocks)
+        std::cout << std::setw(5) << e.length << std::setw(10) << e.n_elements
+                  << std::setw(12) << e.iterations << std::setw(14)
+                  << std::setprecision(4) << e.error_N << std::setw(16)
+                  << e.error_T << std::setw(21) << e.spread_N << std::setw(11)
+                  << std::setprecision(3) << e.seconds << '\n';
+
+      // The polygons against the disc.
+      std::vector<PolygonRun> polygons;
+      polygons.push_back(run_polygon("disc", 0, 0));
+      polygons.push_back(run_polygon("disc", 0, M_PI / 4));
+      for (const unsigned int s : {4u, 8u, 16u, 32u})
+        {
+          polygons.push_back(run_polygon("polygon", s, 0));
+          polygons.push_back(run_polygon("polygon", s, M_PI / s));
+        }
+      std::ofstream pcsv("output/polygon.csv");
+      pcsv << "sides,phi,measured,predicted\n";
+      std::cout << "\nFriction capacity of the dragged cube (mu = 0.5), "
+                   "excess over Coulomb's\n"
+                << "  set    drag angle  measured excess  1/cos(pi/s) - 1"
+                   "   time (s)\n";
+      for (const PolygonRun &p : polygons)
+        {
+          pcsv << std::setprecision(17) << p.sides << ',' << p.phi << ','
+               << p.measured << ',' << p.predicted << '\n';
+          std::cout << std::setw(5)
+                    << (p.sides == 0 ? std::string("disc") :
+                                       std::to_string(p.sides) + "-gon")
+                    << std::setw(10) << std::setprecision(4)
+                    << p.phi * 180 / M_PI << " deg" << std::setw(17)
+                    << std::setprecision(9) << p.measured << std::setw(17)
+                    << p.predicted << std::setw(11) << std::setprecision(3)
+                    << p.seconds << '\n';
+        }
+      pcsv.close();
+
+      if (std::system(("/usr/bin/python3 " + std::string(DPANA_STEP_DIR) +
+                       "/plot.py output")
+                        .c_str()) != 0)
+        std::cerr << "warning: no plot (python3 with matplotlib needed)\n";
+
+      // The headline numbers.
+      for (const BlockError &e : blocks)
+        AssertThrow(e.error_N < 0.03 && e.error_T < 0.03,
+                    dealii::ExcMessage("3D block too far from the plane "
+                                       "solution"));
+      for (const PolygonRun &p : polygons)
+        AssertThrow(std::abs(p.measured - p.predicted) < 1e-5,
+                    dealii::ExcMessage("friction capacity off: measured " +
+                                       std::to_string(p.measured) +
+                                       ", predicted " +
+                                       std::to_string(p.predicted)));
+      std::cout << "\nAll checks passed." << std::endl;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "step-7: " << dpana::parameters::one_line_message(e)
+                << std::endl;
+      return 1;
+    }
+  return 0;
+}
