@@ -5,6 +5,9 @@
 
 receding_3d.png: N and T_x of every contact element of the three 3D blocks
 (all rows t) against the plane solution, along s.
+sphere.png (if the sphere ran): -N of every contact element of the sphere
+against the distance r of its centroid from the axis, with Hertz's
+p0 sqrt(1 - r^2/a^2).
 polygon.png: the excess of friction capacity of the s-gon dragged towards a
 vertex, measured and 1/cos(pi/s) - 1.
 """
@@ -67,7 +70,30 @@ def plot_polygon(out):
     fig.savefig(os.path.join(out, "polygon.png"), dpi=110)
 
 
+def plot_sphere(out):
+    path = os.path.join(out, "sphere.csv")
+    if not os.path.exists(path):
+        return
+    data = rows(path)
+    hertz = rows(os.path.join(out, "hertz.csv"))[0]
+    a, p0 = hertz["a"], hertz["p0"]
+    r = [a * k / 200 for k in range(201)]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(r, [p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2)) for x in r], "k-",
+            label="Hertz, $p_0\\sqrt{1 - r^2/a^2}$")
+    ax.plot([d["r"] for d in data], [d["p"] for d in data], "o", color="C0",
+            mfc="none", ms=5, label="dpana, element means of $-N$")
+    ax.set_xlabel("r (mm), distance of the element centroid from the axis")
+    ax.set_ylabel("pressure (MPa)")
+    ax.set_title(f"Sphere R = 10 mm on a rigid plane, P = {hertz['P']:.0f} N")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "sphere.png"), dpi=110)
+
+
 if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else "output"
     plot_block(out)
     plot_polygon(out)
+    plot_sphere(out)
