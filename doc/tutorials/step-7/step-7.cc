@@ -7,8 +7,9 @@
 // The whole run of a scene (assembly, contact surface, condensation, contact
 // solve, recovery, output) is one object, dpana::scene::Scene. Its parameters
 // are declared by dpana::scene::declare_parameters() from the outline of the
-// run (dimension, number of bodies, contact or not), then read either from a
-// parameter file (dpana::parameters::parse_file) or from text made here.
+// run (dimension, number of bodies, contact or not), then read from a
+// parameter file (dpana::parameters::parse_file): the scenes of the
+// repository's prm/ folder and the .prm files of this step's folder.
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/run.h>
 #include <dpana/scene/scene.h>
@@ -20,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -32,48 +34,51 @@ namespace step7
 
   // @sect3{Running a scene}
   //
-  // A scene is run in three lines once its parameters are known. The
-  // outline tells declare_parameters() which subsections exist; the
-  // parameters then come from a file of the repository's prm/ folder (the
-  // receding block) or from text built by this program (the friction
-  // polygon). The run is quiet, writes no VTU and no plot of its own (this
-  // program draws its figures), and leaves its contact.csv in @p directory.
+  // A scene is run in a few lines once its parameters are known. The
+  // outline of the file (dimension, number of bodies, contact or not),
+  // found by parameters::scan_file(), tells scene::declare_parameters()
+  // which subsections exist; parameters::parse_file() then reads the file,
+  // and reports any error in it on one line with the file name, the line
+  // and the entry. Before the Scene reads its parameters, @p change may set
+  // some of them: this is how the program varies a parameter (the
+  // friction set, the direction of a drag) without one file per value.
+  //
+  // Every run here is quiet and writes no VTU and no plot of its own (this
+  // program draws its figures); it writes contact.csv and summary.json to
+  // @p directory if @p write is true. The plane block must write them: the
+  // 3D blocks read its contact.csv as their comparison file.
   template <int dim>
   void
-  configure(dealii::ParameterHandler &prm, const std::string &directory)
+  run_file(scene::Scene<dim>                                     &scene,
+           const std::string                                     &file,
+           const std::string                                     &directory,
+           const bool                                             write,
+           const std::function<void(dealii::ParameterHandler &)> &change = {})
   {
+    dealii::ParameterHandler prm;
+    scene::declare_parameters(prm, parameters::scan_file(file));
+    parameters::parse_file(prm, file);
     prm.enter_subsection("Output");
     prm.set("Directory", directory);
     prm.set("Write VTU", false);
     prm.set("Plot", false);
     prm.leave_subsection();
-  }
-
-  template <int dim>
-  void
-  run_file(scene::Scene<dim> &scene,
-           const std::string &file,
-           const std::string &directory)
-  {
-    dealii::ParameterHandler prm;
-    scene::declare_parameters(prm, parameters::scan_file(file));
-    parameters::parse_file(prm, file);
-    configure<dim>(prm, directory);
+    if (change)
+      change(prm);
     scene.parse_parameters(prm, 1, true);
     scene.set_quiet(true);
-    scene.run(true);
+    scene.run(write);
   }
 
+  // The sum of the wall times of the phases of a run (s).
   template <int dim>
-  void
-  run_text(scene::Scene<dim> &scene, const std::string &text)
+  double
+  run_time(const scene::Scene<dim> &scene)
   {
-    dealii::ParameterHandler prm;
-    scene::declare_parameters(prm, {dim, 1, true});
-    prm.parse_input_from_string(text);
-    scene.parse_parameters(prm, 1, true);
-    scene.set_quiet(true);
-    scene.run(false);
+    double seconds = 0;
+    for (const auto &phase : scene.phases().timings())
+      seconds += phase.second;
+    return seconds;
   }
 
   // Every run must have converged before its numbers mean anything.
@@ -136,8 +141,11 @@ namespace step7
     scene::Scene<2> scene;
     run_file(scene,
              prm_dir + "/receding_2d_nu0_mu1.prm",
-             "output/receding_2d_nu0_mu1");
+             "output/receding_2d_nu0_mu1",
+             true);
     check_converged(scene, "2D block");
+    // The tractions of every element of the plane run, with their abscissa
+    // s along the base (from the plane of symmetry x = 0).
     PlaneSolution plane;
     for (unsigned int j = 0; j < scene.surface(0).n_elements(); ++j)
       {
@@ -148,6 +156,10 @@ namespace step7
     return plane;
   }
 
+  // The comparison of one block length with the plane solution: the
+  // largest differences of N and T_x over all 3D elements, divided by the
+  // largest pressure of the plane run, the spread of N along t, and the
+  // size and cost of the run.
   struct BlockError
   {
     double       length = 0, error_N = 0, error_T = 0, spread_N = 0;
@@ -166,7 +178,7 @@ namespace step7
   {
     const std::string name = "receding_3d_L" + std::to_string(L);
     scene::Scene<3>   scene;
-    run_file(scene, prm_dir + "/" + name + ".prm", "output/" + name);
+    run_file(scene, prm_dir + "/" + name + ".prm", "output/" + name, true);
     check_converged(scene, name);
 
     double p_max = 0;
@@ -178,6 +190,9 @@ namespace step7
     e.length     = L;
     e.n_elements = scene.surface(0).n_elements();
     e.iterations = scene.summary().result.iterations;
+    // Each 3D element is compared with the 2D element of the same s (the
+    // two meshes share the lattice of contact elements along s), and the
+    // extremes of N are collected per s over the rows t.
     for (unsigned int j = 0; j < e.n_elements; ++j)
       {
         const auto        &element = scene.surface(0).element(j);
@@ -193,8 +208,7 @@ namespace step7
       }
     for (unsigned int i = 0; i < plane.s.size(); ++i)
       e.spread_N = std::max(e.spread_N, (row_max[i] - row_min[i]) / p_max);
-    for (const auto &phase : scene.phases().timings())
-      e.seconds += phase.second;
+    e.seconds = run_time(scene);
     return e;
   }
 
@@ -223,44 +237,31 @@ namespace step7
   // the slip directions fan out). Dragging along a facet normal gives 1 for
   // every polygon.
   //
-  // The frame of the elements is (n, tau_1, tau_2) = (-y, x, z) (see
+  // The cube is the parameter file dragged_cube.prm of this folder. The
+  // frame of the elements is (n, tau_1, tau_2) = (-y, x, z) (see
   // ContactSurface::tangential_frame), so the angle phi of the drag is
-  // measured from x towards z. Friction opposes the slip: its direction
-  // is phi + pi, a vertex of the polygon when phi = pi / s (s even).
-  std::string
-  dragged_cube(const std::string &cone,
-               const unsigned int sides,
-               const double       phi)
+  // measured from x towards z, and the drag of 0.1 mm becomes the
+  // prescribed displacement (0.1 cos phi, -0.01, 0.1 sin phi) of the top
+  // face. Friction opposes the slip: its direction is phi + pi, a vertex of
+  // the polygon when phi = pi / s (s even), the midpoint of a side when
+  // phi = 0.
+  std::function<void(dealii::ParameterHandler &)>
+  drag(const std::string &cone, const unsigned int sides, const double phi)
   {
-    const double       mu = 0.5, drag = 0.1;
-    std::ostringstream text;
-    text << std::setprecision(17)
-         << "subsection Body 1\n"
-            "  subsection Geometry\n"
-            "    set Type = box\n"
-            "    subsection Box\n"
-            "      set Lower corner = 0, 0, 0\n"
-            "      set Upper corner = 20, 20, 20\n"
-            "      set Subdivisions = 8, 4, 8\n"
-            "    end\n"
-            "  end\n"
-            "  subsection Material\n"
-            "    set Young's modulus = 100000\n"
-            "    set Poisson's ratio = 0\n"
-            "  end\n"
-            "  subsection Boundary conditions\n"
-            "    set Prescribed displacement = top: x = "
-         << drag * std::cos(phi) << ", y = -0.01, z = " << drag * std::sin(phi)
-         << "\n"
-            "  end\n"
-            "end\n"
-            "subsection Contact\n"
-            "  set Boundary 1           = bottom\n"
-            "  set Contact direction    = 0, -1, 0\n"
-            "  set Friction coefficient = "
-         << mu << "\n  set Cone model           = " << cone
-         << "\n  set Polygon sides        = " << sides << "\nend\n";
-    return text.str();
+    return [=](dealii::ParameterHandler &prm) {
+      std::ostringstream value;
+      value << std::setprecision(17) << "top: x = " << 0.1 * std::cos(phi)
+            << ", y = -0.01, z = " << 0.1 * std::sin(phi);
+      prm.enter_subsection("Body 1");
+      prm.enter_subsection("Boundary conditions");
+      prm.set("Prescribed displacement", value.str());
+      prm.leave_subsection();
+      prm.leave_subsection();
+      prm.enter_subsection("Contact");
+      prm.set("Cone model", cone);
+      prm.set("Polygon sides", std::to_string(std::max(sides, 3u)));
+      prm.leave_subsection();
+    };
   }
 
   // The friction capacity actually used: |sum_j T_j |Gamma_j|| divided by mu
@@ -274,6 +275,9 @@ namespace step7
   Capacity
   friction_capacity(const scene::Scene<3> &scene, const double mu)
   {
+    // F is the friction resultant in space, P the normal resultant; both
+    // are sums of element tractions times element areas (the tractions
+    // are constant on each element). Separated elements add nothing.
     dealii::Tensor<1, 3> F;
     double               P = 0;
     for (unsigned int j = 0; j < scene.surface(0).n_elements(); ++j)
@@ -285,6 +289,12 @@ namespace step7
     return {F.norm() / (mu * P), std::atan2(F[2], F[0])};
   }
 
+  // One run of the cube: the friction set, the drag angle, the excess
+  // measured and the excess predicted, 1 / cos(pi / s) - 1 towards a
+  // vertex of a polygon and 0 otherwise. The check that the friction
+  // resultant opposes the drag (to 1e-3 rad) makes sure that the frame of
+  // the elements is the one assumed above: were tau_1 and tau_2 swapped, a
+  // drag towards a vertex would be measured along another direction.
   struct PolygonRun
   {
     unsigned int sides;
@@ -295,7 +305,11 @@ namespace step7
   run_polygon(const std::string &cone, const unsigned int sides, double phi)
   {
     scene::Scene<3> scene;
-    run_text(scene, dragged_cube(cone, std::max(sides, 3u), phi));
+    run_file(scene,
+             std::string(DPANA_STEP_DIR) + "/dragged_cube.prm",
+             "output/dragged_cube",
+             false,
+             drag(cone, sides, phi));
     check_converged(scene, "dragged cube");
     const Capacity c = friction_capacity(scene, 0.5);
     // The friction resultant must oppose the drag.
@@ -303,10 +317,8 @@ namespace step7
                 dealii::ExcMessage("the friction does not oppose the drag"));
     const bool   on_vertex = (cone == "polygon" && phi > 0);
     const double predicted = on_vertex ? 1 / std::cos(M_PI / sides) - 1 : 0.;
-    double       seconds   = 0;
-    for (const auto &phase : scene.phases().timings())
-      seconds += phase.second;
-    return {cone == "disc" ? 0 : sides, phi, c.ratio - 1, predicted, seconds};
+    return {
+      cone == "disc" ? 0 : sides, phi, c.ratio - 1, predicted, run_time(scene)};
   }
 
   // @sect3{An elastic sphere on a rigid plane}
@@ -321,7 +333,8 @@ namespace step7
   // (the plane is rigid). A quarter of the lower half of the sphere, R =
   // 10 mm, is meshed by gmsh from sphere.geo of this folder, with
   // tetrahedra of 0.1 mm near the first contact point; the program runs
-  // gmsh itself. The planes x = 0 and z = 0 are planes of symmetry, the top
+  // gmsh itself; the rest is sphere.prm of this folder. The planes x = 0
+  // and z = 0 (boundaries x0 and z0) are planes of symmetry, the top
   // y = R carries a pressure of 157.4 MPa, and the sphere is held by
   // contact only (its vertical translation is free, removed by one
   // fictitious support: step 8). The candidate contact surface is the part
@@ -335,6 +348,9 @@ namespace step7
   // measured peak pressure is the largest element mean of -N. Both are
   // written with the profile -N(r), r the distance of an element's
   // centroid from the axis, to output/sphere.csv.
+  // What the sphere gives: whether gmsh could mesh it, the load P, Hertz's
+  // a and p0 for it, the measured a_A and peak element pressure, the size
+  // of the run and its time.
   struct SphereResult
   {
     bool         meshed = false;
@@ -348,6 +364,10 @@ namespace step7
     SphereResult      h;
     const std::string geo  = std::string(DPANA_STEP_DIR) + "/sphere.geo";
     const std::string mesh = "output/sphere.msh";
+    // The mesh is made at every run from the .geo file, so that the file
+    // in the repository is the only description of the geometry: -3 makes
+    // the volume mesh, msh22 is the ASCII format 2.2 that deal.II's GridIn
+    // reads, and gmsh's own log goes to output/gmsh.log.
     if (std::system(("gmsh -3 " + geo + " -format msh22 -o " + mesh +
                      " > output/gmsh.log 2>&1")
                       .c_str()) != 0)
@@ -356,39 +376,16 @@ namespace step7
                      "output/gmsh.log): the sphere is skipped\n";
         return h;
       }
-    h.meshed             = true;
-    const double       E = 100000, nu = 0.3, R = 10;
-    std::ostringstream text;
-    text << "subsection Body 1\n"
-            "  subsection Geometry\n"
-            "    set Type = gmsh\n"
-            "    subsection Gmsh\n"
-            "      set Mesh file = "
-         << mesh
-         << "\n    end\n"
-            "  end\n"
-            "  subsection Material\n"
-            "    set Young's modulus = "
-         << E << "\n    set Poisson's ratio = " << nu
-         << "\n  end\n"
-            "  subsection Boundary conditions\n"
-            "    set Symmetry = x0, z0\n"
-            "  end\n"
-            "  subsection Loads\n"
-            "    set Pressure = top: 157.4\n"
-            "  end\n"
-            "end\n"
-            "subsection Contact\n"
-            "  set Boundary 1           = curved\n"
-            "  set Candidate centre     = 0, 0, 0\n"
-            "  set Candidate half width = 2.2\n"
-            "  set Contact direction    = 0, -1, 0\n"
-            "  set Friction coefficient = 0\n"
-            "end\n";
+    h.meshed = true;
     scene::Scene<3> scene;
-    run_text(scene, text.str());
+    run_file(scene,
+             std::string(DPANA_STEP_DIR) + "/sphere.prm",
+             "output/sphere",
+             false);
     check_converged(scene, "sphere");
 
+    // The profile and the resultant: P is four times the force on the
+    // quarter.
     std::ofstream csv("output/sphere.csv");
     csv << "r,p\n";
     double contact_area = 0;
@@ -403,14 +400,15 @@ namespace step7
         csv << std::hypot(element.centroid[0], element.centroid[2]) << ',' << p
             << '\n';
       }
+    // Hertz's formulas with the material of sphere.prm and R of sphere.geo.
+    const double E = 100000, nu = 0.3, R = 10;
     const double E_star = E / (1 - nu * nu);
     h.a                 = std::cbrt(3 * h.P * R / (4 * E_star));
     h.p0                = 3 * h.P / (2 * M_PI * h.a * h.a);
     h.a_measured        = std::sqrt(4 * contact_area / M_PI);
     h.n_elements        = scene.surface(0).n_elements();
     h.n_dofs            = scene.body(0).dof_handler().n_dofs();
-    for (const auto &phase : scene.phases().timings())
-      h.seconds += phase.second;
+    h.seconds           = run_time(scene);
     std::ofstream("output/hertz.csv")
       << "P,a,p0\n"
       << std::setprecision(10) << h.P << ',' << h.a << ',' << h.p0 << '\n';
@@ -422,19 +420,27 @@ namespace step7
 //
 // run() of deal.II's tutorials is here main() itself: the plane solution,
 // the three block lengths against it, the polygons against the disc, then
-// the sphere,
-// each as a table on the screen and as CSV data in output/ for the plot
-// script of this folder. The headline numbers are checked at the end:
+// the sphere, each as a table on the screen and as CSV data in output/ for
+// the plot script of this folder, plot.py, which draws the figures of the
+// results (run_step.sh copies them to figures/). The headline numbers are
+// checked at the end, so that the test tutorial/step-7 fails if any of
+// them drifts:
 //
 // - every 3D element of every length within 3% of max |N| of the plane
-//   solution (what the reference formulation's mesh of the block gives:
-//   the tetrahedra and the triangles of the 2D mesh do not carry the same
-//   discretisation error, and this difference, not the length, is what is
-//   measured);
+//   solution. The bound is not a tolerance on round-off: the tetrahedra of
+//   the 3D block and the triangles of the plane block do not carry the
+//   same discretisation error, and it is this difference (2.5%), not the
+//   length of the block, that the comparison measures;
 // - the excess of friction capacity of every polygon dragged towards a
-//   vertex equal to 1 / cos(pi / s) - 1 within 1e-6 (relative), the disc
-//   and the polygon dragged along a facet normal without excess (below
-//   1e-6).
+//   vertex equal to 1 / cos(pi / s) - 1, and that of the disc and of the
+//   polygon dragged along a facet normal equal to 0, both within 1e-5 (of
+//   the Coulomb capacity mu P): the geometry of the friction sets is exact,
+//   only the solver's tolerance and the fanning out of the slip directions
+//   under the disc remain;
+// - the sphere's contact radius within 5% and its peak pressure within 10%
+//   of Hertz's (if gmsh could mesh it): the contact elements of the
+//   unstructured surface, eight triangles each, are about 0.3 mm wide, a
+//   fifth of the contact radius.
 int
 main()
 {
@@ -444,7 +450,10 @@ main()
       const std::string prm_dir = std::string(DPANA_STEP_DIR) + "/../../../prm";
       std::filesystem::create_directories("output");
 
-      // The plane solution and the three lengths.
+      // The plane solution and the three lengths. The repository's scenes
+      // are found from the step's folder, which CMake passes to the
+      // compiler as DPANA_STEP_DIR; the runs write into output/ of the
+      // current directory, the build folder of the step.
       const PlaneSolution plane = plane_solution(prm_dir);
       {
         std::ofstream csv("output/plane.csv");
@@ -470,7 +479,9 @@ main()
                   << e.error_T << std::setw(21) << e.spread_N << std::setw(11)
                   << std::setprecision(3) << e.seconds << '\n';
 
-      // The polygons against the disc.
+      // The polygons against the disc: the disc dragged along x and at 45
+      // degrees (no vertex anywhere), then each polygon dragged along a
+      // facet normal and towards a vertex.
       std::vector<PolygonRun> polygons;
       polygons.push_back(run_polygon("disc", 0, 0));
       polygons.push_back(run_polygon("disc", 0, M_PI / 4));
@@ -500,7 +511,9 @@ main()
         }
       pcsv.close();
 
-      // The sphere.
+      // The sphere. Without gmsh there is no mesh; the program then says
+      // so and skips the sphere, as it skips the figures without
+      // matplotlib.
       const SphereResult h = hertz_sphere();
       if (h.meshed)
         std::cout << std::setprecision(6)
@@ -515,12 +528,15 @@ main()
                   << (h.p_max - h.p0) / h.p0 << "\n  time " << h.seconds
                   << " s\n";
 
+      // The figures: plot.py reads the CSV files written above. The
+      // system Python is used (it has matplotlib from Debian's package);
+      // without it the run goes on, with a warning.
       if (std::system(("/usr/bin/python3 " + std::string(DPANA_STEP_DIR) +
                        "/plot.py output")
                         .c_str()) != 0)
         std::cerr << "warning: no plot (python3 with matplotlib needed)\n";
 
-      // The headline numbers.
+      // The headline numbers (see above).
       for (const BlockError &e : blocks)
         AssertThrow(e.error_N < 0.03 && e.error_T < 0.03,
                     dealii::ExcMessage("3D block too far from the plane "
@@ -537,6 +553,9 @@ main()
                     dealii::ExcMessage("sphere too far from Hertz"));
       std::cout << "\nAll checks passed." << std::endl;
     }
+  // Errors of input (a parameter file that does not parse, a mesh file
+  // that cannot be read) and failed checks end the program with one line
+  // and exit status 1, which fails the test.
   catch (const std::exception &e)
     {
       std::cerr << "step-7: " << dpana::parameters::one_line_message(e)

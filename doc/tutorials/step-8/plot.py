@@ -23,9 +23,12 @@ def main(out):
             history.setdefault(row["case"], []).append(
                 (int(row["iteration"]), float(row["residual"])))
     fig, ax = plt.subplots(figsize=(6.5, 4))
-    for name, points in history.items():
+    styles = ["o-", "s--", "^-.", "v:", "D-"]
+    for k, (name, points) in enumerate(history.items()):
         ax.semilogy([p[0] for p in points], [max(p[1], 1e-17) for p in points],
-                    marker=".", label=name.replace("_", " "))
+                    styles[k % len(styles)], mfc="none", ms=5,
+                    label=name.replace("_splitting_active_set", "")
+                    .replace("_", " "))
     ax.axhline(1e-10, color="k", ls=":", lw=1, label="tolerance 1e-10")
     ax.set_xlabel("outer iteration")
     ax.set_ylabel("natural-map residual")

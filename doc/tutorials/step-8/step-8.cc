@@ -54,7 +54,10 @@ namespace step8
   // G^T alpha. The load is a traction on the top face, (t_x, t_y) MPa; the
   // text below is a complete parameter file.
   std::string
-  floating_block(const double tx, const double ty, const double mu)
+  floating_block(const double       tx,
+                 const double       ty,
+                 const double       mu,
+                 const std::string &solver = "splitting_active_set")
   {
     std::ostringstream text;
     text << std::setprecision(17)
@@ -83,7 +86,7 @@ namespace step8
             "  set Boundary 1           = bottom\n"
             "  set Contact direction    = 0, -1\n"
             "  set Friction coefficient = "
-         << mu << "\nend\n";
+         << mu << "\n  set Solver               = " << solver << "\nend\n";
     return text.str();
   }
 
@@ -198,7 +201,11 @@ namespace step8
   // residual history of the solver (the natural-map residual of
   // contact/residual.h after every outer iteration), the equilibrium
   // defect ||G r - e|| and the violation of the friction cone,
-  // max_j max(|T_j| + mu N_j, N_j, 0).
+  // max_j max(|T_j| + mu N_j, N_j, 0). Last, every case is run with the
+  // two monolithic solvers of dpana as well, nonsmooth Gauss-Seidel (nsgs)
+  // and the semismooth Newton method on the Alart-Curnier equations
+  // (alart_curnier), `set Solver = ...` in `subsection Contact`: what one
+  // solver cannot do, another may.
   struct Case
   {
     std::string name;
@@ -232,13 +239,15 @@ namespace step8
   }
 
   Outcome
-  run_case(const Case &c)
+  run_case(const Case &c, const std::string &solver)
   {
     Outcome           o;
-    const std::string file = "output/" + c.name + ".prm";
-    std::ofstream(file) << floating_block(c.tx, c.ty, c.mu)
-                        << "subsection Output\n  set Directory = output/"
-                        << c.name << "\n  set Write VTU = false\nend\n";
+    const std::string name = c.name + "_" + solver;
+    const std::string file = "output/" + name + ".prm";
+    std::ofstream(file)
+      << floating_block(c.tx, c.ty, c.mu, solver)
+      << "subsection Output\n  set Directory = output/" << name
+      << "\n  set Write VTU = false\n  set Plot = false\nend\n";
 
     // As the executable: catch what it would print.
     std::ostringstream log;
@@ -259,7 +268,7 @@ namespace step8
 
     // The same problem through the Scene, for the numbers.
     scene::Scene<2> scene;
-    run_scene(scene, floating_block(c.tx, c.ty, c.mu));
+    run_scene(scene, floating_block(c.tx, c.ty, c.mu, solver));
     const auto &r = scene.summary().result;
     o.converged   = r.converged;
     o.iterations  = r.iterations;
@@ -312,7 +321,7 @@ main()
       std::vector<Outcome> outcomes;
       for (const Case &c : cases)
         {
-          outcomes.push_back(run_case(c));
+          outcomes.push_back(run_case(c, "splitting_active_set"));
           const Outcome &o = outcomes.back();
           for (unsigned int k = 0; k < o.history.size(); ++k)
             csv << c.name << ',' << k + 1 << ',' << std::setprecision(10)
@@ -337,6 +346,24 @@ main()
                     << o.lines;
         }
 
+      // The same cases with the two monolithic solvers of dpana.
+      std::cout << "\nThe same cases with each solver: exit status / "
+                   "iterations / residual / ||G r - e|| (N/mm)\n";
+      std::vector<std::vector<Outcome>> by_solver(cases.size());
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        {
+          std::cout << std::setw(26) << cases[i].name;
+          for (const std::string solver : {"nsgs", "alart_curnier"})
+            {
+              by_solver[i].push_back(run_case(cases[i], solver));
+              const Outcome &o = by_solver[i].back();
+              std::cout << "  " << solver << ": " << o.status << " / "
+                        << o.iterations << " / " << std::setprecision(2)
+                        << o.residual << " / " << o.equilibrium;
+            }
+          std::cout << '\n';
+        }
+
       if (std::system(("/usr/bin/python3 " + std::string(DPANA_STEP_DIR) +
                        "/plot.py output")
                         .c_str()) != 0)
@@ -354,6 +381,16 @@ main()
                     outcomes[2].status == scene::exit_not_converged &&
                     outcomes[4].status == scene::exit_not_converged,
                   dealii::ExcMessage("an infeasible case was accepted"));
+      // Every solver refuses the two loads that cannot be carried, and both
+      // monolithic solvers solve mu = 1000.
+      for (const unsigned int i : {1u, 2u})
+        for (const Outcome &o : by_solver[i])
+          AssertThrow(o.status == scene::exit_not_converged,
+                      dealii::ExcMessage("an infeasible case was accepted"));
+      for (const Outcome &o : by_solver[4])
+        AssertThrow(o.status == 0,
+                    dealii::ExcMessage("mu = 1000 not solved by nsgs or "
+                                       "alart_curnier"));
       std::cout << "\nAll checks passed." << std::endl;
     }
   catch (const std::exception &e)
