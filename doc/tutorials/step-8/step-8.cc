@@ -51,47 +51,46 @@ namespace step8
   // @f]
   // the equilibrium of the body under its loads and contact tractions, and
   // alpha is their multiplier, which enters the contact displacements as
-  // G^T alpha. The load is a traction on the top face, (t_x, t_y) MPa; the
-  // text below is a complete parameter file.
+  // G^T alpha.
+  //
+  // The block is the parameter file floating_block.prm of this folder. The
+  // cases of this step differ by the traction (t_x, t_y) on the top face
+  // (MPa), the friction coefficient and the solver; a ParameterHandler
+  // reads a file from top to bottom and a later `set` of an entry replaces
+  // an earlier one, so each case is the file followed by the text below.
+  std::string
+  case_parameters(const double       tx,
+                  const double       ty,
+                  const double       mu,
+                  const std::string &solver)
+  {
+    std::ostringstream text;
+    text << std::setprecision(17) << "subsection Body 1\n"
+         << "  subsection Loads\n    set Traction = top: " << tx << ", " << ty
+         << "\n  end\nend\nsubsection Contact\n"
+         << "  set Friction coefficient = " << mu
+         << "\n  set Solver = " << solver << "\nend\n";
+    return text.str();
+  }
+
+  // The whole parameter text of a case: the file, then the changes.
   std::string
   floating_block(const double       tx,
                  const double       ty,
                  const double       mu,
                  const std::string &solver = "splitting_active_set")
   {
+    std::ifstream file(std::string(DPANA_STEP_DIR) + "/floating_block.prm");
+    AssertThrow(file, dealii::ExcMessage("cannot read floating_block.prm"));
     std::ostringstream text;
-    text << std::setprecision(17)
-         << "set Dimension        = 2\n"
-            "set Number of bodies = 1\n"
-            "subsection Body 1\n"
-            "  subsection Geometry\n"
-            "    set Type = rectangle\n"
-            "    subsection Rectangle\n"
-            "      set Lower corner = 0, 0\n"
-            "      set Upper corner = 40, 20\n"
-            "      set Subdivisions = 16, 8\n"
-            "    end\n"
-            "  end\n"
-            "  subsection Material\n"
-            "    set Young's modulus = 100000\n"
-            "    set Poisson's ratio = 0.3\n"
-            "  end\n"
-            "  subsection Loads\n"
-            "    set Traction = top: "
-         << tx << ", " << ty
-         << "\n"
-            "  end\n"
-            "end\n"
-            "subsection Contact\n"
-            "  set Boundary 1           = bottom\n"
-            "  set Contact direction    = 0, -1\n"
-            "  set Friction coefficient = "
-         << mu << "\n  set Solver               = " << solver << "\nend\n";
-    return text.str();
+    text << file.rdbuf();
+    return text.str() + case_parameters(tx, ty, mu, solver);
   }
 
   // A quiet run of a parameter text with the Scene, without output files:
   // the numbers (result, residual history, condensation) are read from it.
+  // The outline of the run (2D, one body, contact) is known here, so the
+  // parameters are declared without scanning a file.
   void
   run_scene(scene::Scene<2> &scene, const std::string &text)
   {
@@ -132,9 +131,13 @@ namespace step8
     const auto &condenser = scene.condenser(0);
     AssertThrow(result.converged,
                 dealii::ExcMessage("the held block did not converge"));
+    // Without any kinematic condition a plane body has exactly three rigid
+    // motions, and all of them must be found free.
     AssertThrow(condenser.n_free_modes() == 3,
                 dealii::ExcMessage("expected three free rigid motions"));
 
+    // The free motions are named by the body (Body::free_rigid_modes()),
+    // the supports are degrees of freedom of the body's DoFHandler.
     std::cout << "Floating block, top traction (" << tx << ", " << ty
               << ") MPa, mu = " << mu << "\n  free rigid motions:";
     for (const auto &mode : scene.body(0).free_rigid_modes())
@@ -144,6 +147,9 @@ namespace step8
       std::cout << ' ' << s;
 
     // The reactions of the fictitious supports and the resultants.
+    // G r - e is the vector of the reactions of the fictitious supports,
+    // in the coordinates of the rigid modes; it is measured relative to e,
+    // the loads in the same coordinates.
     const auto     &problem  = scene.problem();
     Eigen::VectorXd reaction = problem.G * result.r - problem.e;
     Equilibrium     eq;
@@ -163,7 +169,10 @@ namespace step8
               << " N/mm, sum(T_x)|Gamma| = " << eq.resultant_T << " N/mm\n";
 
     // The rigid part of the recovered displacement, R alpha, is the
-    // difference of two recoveries; at the supports it is all there is.
+    // difference of two recoveries: Condenser::recover() adds R alpha to
+    // the elastic displacement u_o + K_s^{-1} V r, and with alpha = 0 it
+    // gives the elastic part alone. At the supports the elastic part is
+    // held at zero, so the rigid part is all there is.
     const dealii::Vector<double> u = condenser.recover(result.r, result.alpha);
     const dealii::Vector<double> u_elastic =
       condenser.recover(result.r, Eigen::VectorXd::Zero(result.alpha.size()));
@@ -206,12 +215,16 @@ namespace step8
   // and the semismooth Newton method on the Alart-Curnier equations
   // (alart_curnier), `set Solver = ...` in `subsection Contact`: what one
   // solver cannot do, another may.
+  // A case: its name (also the name of its parameter file and output
+  // folder), the traction on the top face and the friction coefficient.
   struct Case
   {
     std::string name;
     double      tx, ty, mu;
   };
 
+  // What a case gives: the exit status and the verdict lines of the run as
+  // the executable, then the solver's figures from the Scene.
   struct Outcome
   {
     int                 status = 0;
@@ -244,15 +257,18 @@ namespace step8
     Outcome           o;
     const std::string name = c.name + "_" + solver;
     const std::string file = "output/" + name + ".prm";
-    std::ofstream(file)
-      << floating_block(c.tx, c.ty, c.mu, solver)
-      << "subsection Output\n  set Directory = output/" << name
-      << "\n  set Write VTU = false\n  set Plot = false\nend\n";
+    std::ofstream(file) << floating_block(c.tx, c.ty, c.mu, solver)
+                        << "subsection Output\n  set Directory = output/"
+                        << name << "\nend\n";
 
     // As the executable: catch what it would print.
     std::ostringstream log;
-    auto              *cout_buffer = std::cout.rdbuf(log.rdbuf());
-    auto              *cerr_buffer = std::cerr.rdbuf(log.rdbuf());
+    // The standard streams are redirected into one string for the time of
+    // the run, and restored before anything else is printed. An input
+    // error, which the executable reports as `dpana: error: ...` with exit
+    // status 1, is caught here the same way.
+    auto *cout_buffer = std::cout.rdbuf(log.rdbuf());
+    auto *cerr_buffer = std::cerr.rdbuf(log.rdbuf());
     try
       {
         o.status = scene::run(file);
@@ -310,12 +326,16 @@ main()
       AssertThrow(eq.support_mismatch < 1e-12,
                   dealii::ExcMessage("elastic displacement at a support"));
 
+      // The cases, in the order of the introduction: the held block, the
+      // two loads that cannot be carried, the two large mu.
       const std::vector<Case> cases = {
         {"held", 20, -50, 0.5},
         {"pulled_away", 0, 10, 0.5},
         {"side_load_beyond_friction", 30, -50, 0.5},
         {"large_mu", 20, -50, 10},
         {"very_large_mu", 20, -50, 1000}};
+      // Each case with the default solver, its residual history written for
+      // the figure (one row per outer iteration of the splitting).
       std::ofstream csv("output/residuals.csv");
       csv << "case,iteration,residual\n";
       std::vector<Outcome> outcomes;
@@ -346,7 +366,10 @@ main()
                     << o.lines;
         }
 
-      // The same cases with the two monolithic solvers of dpana.
+      // The same cases with the two monolithic solvers of dpana. Only the
+      // figures are printed here, one line per case; the parameter files
+      // and outputs of these runs are in output/ under the name of the
+      // case and the solver, for a closer look.
       std::cout << "\nThe same cases with each solver: exit status / "
                    "iterations / residual / ||G r - e|| (N/mm)\n";
       std::vector<std::vector<Outcome>> by_solver(cases.size());
@@ -393,6 +416,8 @@ main()
                                        "alart_curnier"));
       std::cout << "\nAll checks passed." << std::endl;
     }
+  // A failed check or an error ends the program with one line and exit
+  // status 1, which fails the test tutorial/step-8.
   catch (const std::exception &e)
     {
       std::cerr << "step-8: " << dpana::parameters::one_line_message(e)
