@@ -39,13 +39,13 @@ namespace step7
   // found by parameters::scan_file(), tells scene::declare_parameters()
   // which subsections exist; parameters::parse_file() then reads the file,
   // and reports any error in it on one line with the file name, the line
-  // and the entry. Before the Scene reads its parameters, @p change may set
+  // and the entry. Before the Scene reads its parameters, `change` may set
   // some of them: this is how the program varies a parameter (the
   // friction set, the direction of a drag) without one file per value.
   //
   // Every run here is quiet and writes no VTU and no plot of its own (this
   // program draws its figures); it writes contact.csv and summary.json to
-  // @p directory if @p write is true. The plane block must write them: the
+  // `directory` if `write` is true. The plane block must write them: the
   // 3D blocks read its contact.csv as their comparison file.
   template <int dim>
   void
@@ -222,9 +222,9 @@ namespace step7
   // a_i = 2 (i - 1) pi / s) and reaches out to the radius 1 / cos(pi / s) at
   // its vertices: in the direction of a vertex, the friction that the
   // polygon lets an element carry exceeds Coulomb's by
-  // @f[
+  // $$
   //   \epsilon_s = \frac{1}{\cos(\pi / s)} - 1 .
-  // @f]
+  // $$
   // The error only shows when the contact slips, and only when it slips in
   // the direction of a vertex. The problem made here forces exactly that: a
   // cube of side 20 mm (nu = 0) is pressed onto the rigid plane by a
@@ -326,10 +326,10 @@ namespace step7
   // The 3D Hertz problem (Hertz 1882; Johnson 1985, chapter 4): a sphere of
   // radius R pressed by a force P onto a rigid plane touches it in a disc
   // of radius a and carries the pressure p0 sqrt(1 - r^2 / a^2), with
-  // @f[
+  // $$
   //   a = \left(\frac{3 P R}{4 E^*}\right)^{1/3}, \qquad
   //   p_0 = \frac{3 P}{2 \pi a^2}, \qquad E^* = \frac{E}{1 - \nu^2}
-  // @f]
+  // $$
   // (the plane is rigid). A quarter of the lower half of the sphere, R =
   // 10 mm, is meshed by gmsh from sphere.geo of this folder, with
   // tetrahedra of 0.1 mm near the first contact point; the program runs

@@ -40,15 +40,15 @@ namespace step8
   // supports: m degrees of freedom held at zero, chosen so that they hold
   // the rigid motions and nothing more (a statically determinate support).
   // With them the displacement is
-  // @f[
+  // $$
   //   u = u_o + Z r + R \alpha ,
-  // @f]
+  // $$
   // alpha the unknown amplitude of the rigid motion. The reactions of the
   // fictitious supports, R^T (f + V r), must vanish, since the real body
   // has no support there: these are the m equality rows
-  // @f[
+  // $$
   //   G r = e, \qquad G = R^T V, \quad e = -R^T f ,
-  // @f]
+  // $$
   // the equilibrium of the body under its loads and contact tractions, and
   // alpha is their multiplier, which enters the contact displacements as
   // G^T alpha.
