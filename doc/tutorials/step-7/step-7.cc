@@ -1,6 +1,4 @@
-// ---------------------------------------------------------------------------
 // dpana tutorial step 7: three dimensions.
-// ---------------------------------------------------------------------------
 
 // @sect3{Include files}
 //
@@ -81,7 +79,8 @@ namespace step7
     return seconds;
   }
 
-  // Every run must have converged before its numbers mean anything.
+  // Every run must have converged before its numbers mean anything: a run
+  // that did not would compare an unfinished iterate with the reference.
   template <int dim>
   void
   check_converged(const scene::Scene<dim> &scene, const std::string &what)
@@ -94,6 +93,8 @@ namespace step7
 
   // The tangential traction of element j as a vector of space: the
   // components T_k are given in the frame (tau_1, tau_2) of the element.
+  // In 2D the frame has the one tangent tau, and the same function gives
+  // T tau, so that the plane and the 3D runs are compared in x, y, z.
   template <int dim>
   dealii::Tensor<1, dim>
   tangential_vector(const scene::Scene<dim> &scene, const unsigned int j)

@@ -1,6 +1,4 @@
-// ---------------------------------------------------------------------------
 // dpana tutorial step 8: floating bodies and hard cases.
-// ---------------------------------------------------------------------------
 
 // @sect3{Include files}
 //
@@ -237,7 +235,8 @@ namespace step8
   };
 
   // The lines of the log worth showing: the solver's verdict, warnings and
-  // errors.
+  // errors. The rest of the log (the phases and their times, the sizes of
+  // the problem) is the same for every case and is left out.
   std::string
   verdict_lines(const std::string &log)
   {
