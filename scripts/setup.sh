@@ -23,6 +23,7 @@ packages=(
   numdiff               # regression runs compared with reference output
   python3 python3-matplotlib python3-numpy # plots of results and benchmarks
   libsiconos-numerics-dev # independent contact solvers for cross-checks
+  gmsh                  # meshes of the tutorial steps made from .geo files
   clang-format
 )
 
