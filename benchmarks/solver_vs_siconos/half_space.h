@@ -5,11 +5,11 @@
 //
 // @sect3{Why these matrices}
 //
-// The condensed compliance A of the seeds is dense, symmetric positive
-// definite, dominated by its diagonal but with slowly decaying off-diagonal
-// entries (the Green's function of elasticity decays like log(1/r) in 2D
-// and 1/r in 3D), and it couples normal and tangential unknowns. For a body
-// much larger than the contact zone A tends to the influence matrix of a
+// The condensed compliance A of the reference formulation is dense, symmetric
+// positive definite, dominated by its diagonal but with slowly decaying
+// off-diagonal entries (the Green's function of elasticity decays like log(1/r)
+// in 2D and 1/r in 3D), and it couples normal and tangential unknowns. For a
+// body much larger than the contact zone A tends to the influence matrix of a
 // half-plane / half-space, which has closed forms: so these matrices have
 // the structure and the conditioning of real condensed problems (the
 // condition number grows with the number of elements) without a mesh.
@@ -29,7 +29,8 @@
 // by measuring the logarithm relative to a length L = 4 (four times the
 // loaded segment): ln|x| -> ln(|x| / L), which keeps A positive definite.
 // Integrating over element j and multiplying by h (the work conjugate of a
-// piecewise constant traction, as in the seeds' A = V^T K^{-1} V):
+// piecewise constant traction, as in the reference formulation's A = V^T K^{-1}
+// V):
 //   A_{N_i N_j} = A_{T_i T_j} = -h c_1 \int_{-h/2}^{h/2} ln(|x_i - x_j - s| /
 //   L) ds, A_{T_i N_j} = A_{N_j T_i} = h^2 c_2 sgn(i - j)        (0 for i = j),
 //   c_1 = 2 (1 - nu^2) / (pi E),  c_2 = beta (1 - 2 nu)(1 + nu) / (2 E),

@@ -26,8 +26,8 @@ namespace dpana
                       "130000",
                       dealii::Patterns::Double(),
                       "Young's modulus E of the body (MPa = N/mm^2); must be "
-                      "positive. 130000 MPa is the value of the seed "
-                      "examples.");
+                      "positive. 130000 MPa is the value of the examples of "
+                      "the reference formulation.");
     prm.declare_entry("Poisson's ratio",
                       "0.2",
                       dealii::Patterns::Double(),

@@ -11,10 +11,11 @@
 // @f[
 //   r = (N_0, T_{0,1}, [T_{0,2}], N_1, T_{1,1}, [T_{1,2}], \dots),
 // @f]
-// so that N_j = r[d j] and T_{j,k} = r[d j + 1 + k]. The seeds' blocks A_NN,
-// A_NT, A_TT are the corresponding sub-matrices of A.
+// so that N_j = r[d j] and T_{j,k} = r[d j + 1 + k]. The reference
+// formulation's blocks A_NN, A_NT, A_TT are the corresponding sub-matrices of
+// A.
 //
-// @sect3{Sign convention (the seeds')}
+// @sect3{Sign convention (the reference formulation's)}
 //
 // Compressive normal traction is negative, N <= 0; the normal displacement
 // u_N (initial gap already included through D_N = \hat D_N - g_o) is
@@ -48,7 +49,8 @@ namespace dpana
     {
       // 2D: the exact interval |T| <= -mu N. (In 3D it is rejected.)
       interval,
-      // 3D: the circumscribed regular polygon with s sides of the seeds,
+      // 3D: the circumscribed regular polygon with s sides of the reference
+      // formulation,
       //   T_1 cos(a_i) + T_2 sin(a_i) <= -mu N, a_i = 2 (i-1) pi / s.
       polygon,
       // 3D: the exact disc ||T|| <= -mu N (second order cone).
@@ -89,7 +91,7 @@ namespace dpana
       ConeModel cone = ConeModel::interval;
 
       // Number of sides s of the friction polygon (ConeModel::polygon), s >= 3
-      // (the seeds use s = 2^m, m = 4..5).
+      // (the reference formulation uses s = 2^m, m = 4..5).
       unsigned int polygon_sides = 16;
 
       // Equality rows of floating bodies: G is m x (d n), e has size m; both

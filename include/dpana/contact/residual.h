@@ -4,18 +4,19 @@
 //
 // With u = A r + D + G^T alpha and, per element j, the friction set
 //   K_j = { (N, T) : N <= 0, gamma(T) <= -mu_j N }
-// (gamma and its support function sigma: see friction_set.h), the seeds'
-// law (Signorini + Coulomb, non-associated) holds at element j if and only if
+// (gamma and its support function sigma: see friction_set.h), the reference
+// formulation's law (Signorini + Coulomb, non-associated) holds at element j if
+// and only if
 // @f[
 //   F_j(r) = r_j - \Pi_{K_j}\big( r_j - \rho\, \tilde u_j \big) = 0,
 //   \qquad
 //   \tilde u_j = \big( u_{N,j} - \mu_j\, \sigma(-u_{T,j}),\ u_{T,j} \big),
 // @f]
 // for any rho > 0. tilde u is the modified (bipotential) velocity of De
-// Saxce and Feng written in the seeds' signs; for the disc and the interval
-// sigma(-u_T) = ||u_T||, for the polygon it is max_i v_i . (-u_T) over the
-// polygon vertices. Proof sketch: F_j = 0 iff -tilde u_j lies in the polar
-// cone K_j^o = { y_N >= mu sigma(y_T) } (which is exactly u_N <= 0) and
+// Saxce and Feng written in the reference formulation's signs; for the disc and
+// the interval sigma(-u_T) = ||u_T||, for the polygon it is max_i v_i . (-u_T)
+// over the polygon vertices. Proof sketch: F_j = 0 iff -tilde u_j lies in the
+// polar cone K_j^o = { y_N >= mu sigma(y_T) } (which is exactly u_N <= 0) and
 // r_j . tilde u_j = 0, i.e. N u_N + [(-mu N) sigma(-u_T) - T . (-u_T)] = 0;
 // both brackets are >= 0, so N u_N = 0 and -u_T lies in the normal cone of
 // the tangential set -mu N P at T: stick (u_T = 0) inside, slip (u_T = -lambda

@@ -3,7 +3,8 @@
 // stopping and stall test (monitor.h).
 //
 // Solvers (see doc/contact_solvers.md for the mathematics):
-//   - splitting_pgs, splitting_active_set: the D-PANA splitting of the seeds
+//   - splitting_pgs, splitting_active_set: the D-PANA splitting of the
+//   reference formulation
 //     (T-step at fixed N, N-step at fixed T, repeated to a fixed point), with
 //     projected Gauss-Seidel or active-set / semismooth Newton inner solvers
 //     (normal_lcp.h, friction_qp.h; the loop itself in splitting.h);

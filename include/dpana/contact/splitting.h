@@ -1,4 +1,4 @@
-// The D-PANA splitting of the seeds (seed 001, section 2.2.1).
+// The D-PANA splitting of the reference formulation (chapter 2, section 2.2.1).
 //
 // With the blocks A_NN, A_NT, A_TT (extracted once per solve) repeat
 //   T-step:  T_k = argmin 1/2 T^T A_TT T + T^T (D_T + A_TN N_{k-1})

@@ -4,8 +4,8 @@
 //
 // @sect3{The two sign conventions}
 //
-// dpana follows the seeds: compressive normal traction N <= 0, admissible
-// normal displacement u_N <= 0, and
+// dpana follows the reference formulation: compressive normal traction N <= 0,
+// admissible normal displacement u_N <= 0, and
 // @f[
 //   u = A r + D .
 // @f]
@@ -17,11 +17,12 @@
 // @f]
 // Both problems are the same if r_s = -r and u_s = -u: then
 // u_s = -(A r + D) = A r_s - D, that is M = A and q = -D. The slip rule
-// u_T = -lambda T of the seeds becomes u_{s,T} = -lambda r_{s,T}, which is
-// exactly Coulomb's law of maximal dissipation in the Siconos convention, and
-// the per contact ordering [N, T_1, T_2] is the same on both sides, so no
-// permutation is needed. In 3D Siconos knows only the exact disc, so the
-// matching dpana cone model is ConeModel::disc (in 2D ConeModel::interval).
+// u_T = -lambda T of the reference formulation becomes u_{s,T} = -lambda
+// r_{s,T}, which is exactly Coulomb's law of maximal dissipation in the Siconos
+// convention, and the per contact ordering [N, T_1, T_2] is the same on both
+// sides, so no permutation is needed. In 3D Siconos knows only the exact disc,
+// so the matching dpana cone model is ConeModel::disc (in 2D
+// ConeModel::interval).
 //
 // The pure sign mapping (struct FrictionContactData and its two functions)
 // needs nothing but Eigen and is always available; everything that calls

@@ -28,7 +28,7 @@ namespace dpana
       // (Householder QR of a Gaussian matrix) and eigenvalues lambda spread
       // log-uniformly over [1, condition]: a dense SPD matrix that couples
       // every unknown with every other one, normal with tangential included,
-      // as the condensed compliance of the seeds does.
+      // as the condensed compliance of the reference formulation does.
       //
       // Rather than choosing D at random and hoping for a mixture of contact
       // states, we choose the solution first, element by element,
