@@ -87,6 +87,7 @@ namespace dpana
                                  const std::string        &path)
     {
       using parameters::parse_point;
+      parameter = path;
       lower_corner =
         parse_point<dim>(prm.get("Lower corner"), path + " / Lower corner");
       upper_corner =
@@ -170,6 +171,13 @@ namespace dpana
       dealii::Triangulation<dim> &tria,
       const unsigned int          n_global_refinements) const
     {
+      // 2 triangles per rectangle, 5 tetrahedra per brick, 2^dim children
+      // per refinement.
+      double n_cells =
+        (dim == 2 ? 2 : 5) * std::pow(2., dim * n_global_refinements);
+      for (const unsigned int n : subdivisions)
+        n_cells *= n;
+      check_mesh_size(n_cells, parameter + " / Subdivisions");
       dealii::GridGenerator::subdivided_hyper_rectangle_with_simplices(
         tria, subdivisions, lower_corner, upper_corner, false);
       if (graded())

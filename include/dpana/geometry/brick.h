@@ -73,6 +73,7 @@ namespace dpana
       description() const override;
 
     private:
+      std::string               parameter;
       dealii::Point<dim>        lower_corner;
       dealii::Point<dim>        upper_corner;
       std::vector<unsigned int> subdivisions;

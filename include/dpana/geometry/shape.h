@@ -83,6 +83,24 @@ namespace dpana
 
 
 
+    /**
+     * The largest mesh a run accepts: 5e7 cells. A linear simplex mesh needs
+     * about 1 kB per cell for the triangulation, the degrees of freedom and
+     * the stiffness matrix, so that 5e7 cells already ask for some 50 GB.
+     */
+    constexpr double max_cells = 5e7;
+
+    /**
+     * Refuses, before anything is built, a mesh whose estimated number of
+     * cells @p n_cells exceeds max_cells: a one-line dpana::InputError that
+     * names @p parameter (the entry that makes the mesh that large) and the
+     * estimate, instead of a std::bad_alloc after minutes of work.
+     */
+    void
+    check_mesh_size(const double n_cells, const std::string &parameter);
+
+
+
     namespace internal
     {
       /**
