@@ -164,6 +164,21 @@ namespace dpana
 
 
 
+    template <int dim>
+    std::pair<double, std::string>
+    Brick<dim>::estimated_size(const unsigned int n_global_refinements) const
+    {
+      double n_coarse = dim == 2 ? 2 : 5;
+      for (const unsigned int n : subdivisions)
+        n_coarse *= n;
+      // The entry to blame: the Subdivisions if they alone are too many.
+      return {n_coarse * std::pow(2., dim * n_global_refinements),
+              n_coarse > max_cells ? parameter + " / Subdivisions" :
+                                     "Geometry / Global refinements"};
+    }
+
+
+
     // @sect3{Creating the mesh}
     template <int dim>
     void
@@ -171,13 +186,6 @@ namespace dpana
       dealii::Triangulation<dim> &tria,
       const unsigned int          n_global_refinements) const
     {
-      // 2 triangles per rectangle, 5 tetrahedra per brick, 2^dim children
-      // per refinement.
-      double n_cells =
-        (dim == 2 ? 2 : 5) * std::pow(2., dim * n_global_refinements);
-      for (const unsigned int n : subdivisions)
-        n_cells *= n;
-      check_mesh_size(n_cells, parameter + " / Subdivisions");
       dealii::GridGenerator::subdivided_hyper_rectangle_with_simplices(
         tria, subdivisions, lower_corner, upper_corner, false);
       if (graded())

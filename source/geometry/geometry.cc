@@ -162,6 +162,9 @@ namespace dpana
       try
         {
           s->parse_parameters(prm, "Geometry / " + t->subsection);
+          const auto [n_cells, parameter] =
+            s->estimated_size(n_global_refinements);
+          check_mesh_size(n_cells, parameter);
         }
       catch (...)
         {

@@ -55,7 +55,9 @@ namespace dpana
       std::ifstream     in(mesh_file);
       if (mesh_file.empty() || !in)
         throw InputError(error + "' not found");
-      names = read_gmsh_sections(in, dim, error);
+      const GmshOutline outline = read_gmsh_sections(in, dim, error);
+      names                     = outline.boundary_names;
+      n_cells                   = outline.n_cells;
       if (names.empty())
         throw InputError(error +
                          "' names no boundary: give every boundary a "
@@ -70,6 +72,16 @@ namespace dpana
     GmshFile<dim>::boundary_names() const
     {
       return names;
+    }
+
+
+
+    template <int dim>
+    std::pair<double, std::string>
+    GmshFile<dim>::estimated_size(const unsigned int n_global_refinements) const
+    {
+      return {n_cells * std::pow(2., dim * n_global_refinements),
+              "Geometry / Global refinements"};
     }
 
 
@@ -108,9 +120,6 @@ namespace dpana
         throw InputError(error + "' must contain " +
                          (dim == 2 ? "triangles" : "tetrahedra") + " only");
       check_physical_groups(tria);
-      check_mesh_size(tria.n_active_cells() *
-                        std::pow(2., dim * n_global_refinements),
-                      "Geometry / Global refinements");
       tria.refine_global(n_global_refinements);
     }
 

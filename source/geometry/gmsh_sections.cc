@@ -322,8 +322,8 @@ namespace dpana
 
 
       // One element: its node count (for the types GridIn reads), its
-      // nodes, and the measure of the cells.
-      void
+      // nodes, and the measure of the cells. True if it is a cell.
+      bool
       check_element(const Lines                  &lines,
                     const Nodes                  &nodes,
                     const long long               tag,
@@ -334,7 +334,7 @@ namespace dpana
         const std::string element = "element " + std::to_string(tag);
         const std::size_t n       = nodes_of_type(type);
         if (n == 0)
-          return;
+          return false;
         if (node_tags.size() != n)
           lines.fail(element + " of type " + std::to_string(type) + " has " +
                      std::to_string(node_tags.size()) + " nodes instead of " +
@@ -349,16 +349,20 @@ namespace dpana
             p.push_back(&node->second);
           }
         const long long cell_type = dim == 2 ? 2 : 4;
-        if (type == cell_type && degenerate(p, dim))
+        if (type != cell_type)
+          return false;
+        if (degenerate(p, dim))
           lines.fail(element + " (a " +
                      (dim == 2 ? "triangle) has zero area" :
                                  "tetrahedron) has zero volume") +
                      ": a degenerate cell");
+        return true;
       }
 
 
 
-      void
+      // Returns the number of cells.
+      unsigned long long
       read_elements(Lines             &lines,
                     const bool         v41,
                     const Nodes       &nodes,
@@ -366,6 +370,7 @@ namespace dpana
       {
         const std::string section = "$Elements";
         lines.next_in(section);
+        unsigned long long n_cells = 0;
         if (!v41)
           {
             const long long n = lines.integers(1, "the number of elements")[0];
@@ -379,12 +384,12 @@ namespace dpana
                     v.size() < 3 + static_cast<std::size_t>(v[2]))
                   lines.fail("expected " + layout + ", got " +
                              parameters::quote(lines.line()));
-                check_element(lines,
-                              nodes,
-                              v[0],
-                              v[1],
-                              {v.begin() + 3 + v[2], v.end()},
-                              dim);
+                n_cells += check_element(lines,
+                                         nodes,
+                                         v[0],
+                                         v[1],
+                                         {v.begin() + 3 + v[2], v.end()},
+                                         dim);
               }
           }
         else
@@ -403,12 +408,12 @@ namespace dpana
                     lines.next_in(section);
                     const auto v =
                       lines.integers(0, "an element 'tag nodes...'");
-                    check_element(lines,
-                                  nodes,
-                                  v[0],
-                                  block[2],
-                                  {v.begin() + 1, v.end()},
-                                  dim);
+                    n_cells += check_element(lines,
+                                             nodes,
+                                             v[0],
+                                             block[2],
+                                             {v.begin() + 1, v.end()},
+                                             dim);
                   }
                 n_read += block[3];
               }
@@ -419,20 +424,21 @@ namespace dpana
           }
         lines.next_in(section);
         lines.expect("$EndElements");
+        return n_cells;
       }
     } // namespace
 
 
 
-    std::map<std::string, dealii::types::boundary_id>
+    GmshOutline
     read_gmsh_sections(std::istream      &in,
                        const unsigned int dim,
                        const std::string &error)
     {
-      Lines lines(in, error);
-      bool  format_seen = false, v41 = false, nodes_seen = false;
-      Nodes nodes;
-      std::map<std::string, dealii::types::boundary_id> names;
+      Lines       lines(in, error);
+      bool        format_seen = false, v41 = false, nodes_seen = false;
+      Nodes       nodes;
+      GmshOutline outline;
       while (lines.next())
         {
           const std::string line = dealii::Utilities::trim(lines.line());
@@ -442,20 +448,20 @@ namespace dpana
                    line.rfind("$End", 0) != 0)
             lines.fail(line + " comes before $MeshFormat");
           else if (line == "$PhysicalNames")
-            read_physical_names(lines, dim, names);
+            read_physical_names(lines, dim, outline.boundary_names);
           else if (line == "$Nodes")
             nodes = read_nodes(lines, v41), nodes_seen = true;
           else if (line == "$Elements")
             {
               if (!nodes_seen)
                 lines.fail("$Elements comes before $Nodes");
-              read_elements(lines, v41, nodes, dim);
+              outline.n_cells = read_elements(lines, v41, nodes, dim);
             }
         }
       if (!format_seen)
         throw InputError(error + "' has no $MeshFormat section, it is not a "
                                  "gmsh file");
-      return names;
+      return outline;
     }
   } // namespace geometry
 } // namespace dpana

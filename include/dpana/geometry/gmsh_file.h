@@ -53,6 +53,12 @@ namespace dpana
       boundary_names() const override;
 
       /**
+       * The cells of the file, 2^dim children per refinement.
+       */
+      std::pair<double, std::string>
+      estimated_size(const unsigned int n_global_refinements) const override;
+
+      /**
        * The file name in quotes.
        */
       std::string
@@ -62,6 +68,7 @@ namespace dpana
       std::string                                       mesh_file;
       std::string                                       parameter;
       std::map<std::string, dealii::types::boundary_id> names;
+      unsigned long long                                n_cells = 0;
 
       void
       read_boundary_names();

@@ -17,7 +17,8 @@ namespace dpana
     /**
      * Reads an ASCII gmsh file once, before deal.II's GridIn::read_msh, and
      * checks what GridIn takes for granted; returns the boundary names (the
-     * $PhysicalNames of dimension @p dim - 1, name -> tag).
+     * $PhysicalNames of dimension @p dim - 1, name -> tag) and the number of
+     * cells.
      *
      * GridIn reads the counts at the head of the $Nodes and $Elements
      * sections and then as many numbers as they promise, without checking
@@ -49,7 +50,15 @@ namespace dpana
      * Element types GridIn does not read are left to GridIn, whose own
      * message then names the type.
      */
-    std::map<std::string, dealii::types::boundary_id>
+    struct GmshOutline
+    {
+      // The $PhysicalNames of dimension dim - 1: name -> tag.
+      std::map<std::string, dealii::types::boundary_id> boundary_names;
+      // The number of cells (triangles in 2D, tetrahedra in 3D).
+      unsigned long long n_cells = 0;
+    };
+
+    GmshOutline
     read_gmsh_sections(std::istream      &in,
                        const unsigned int dim,
                        const std::string &error);

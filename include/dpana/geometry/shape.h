@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace dpana
 {
@@ -55,6 +56,16 @@ namespace dpana
                            const unsigned int n_global_refinements) const = 0;
 
       /**
+       * The number of cells of the mesh with @p n_global_refinements,
+       * estimated before it is built, and the entry that makes it that
+       * large (e.g. "Geometry / Rectangle / Subdivisions"). Geometry<dim>
+       * hands both to check_mesh_size() as soon as the entries are read,
+       * so that a mesh this machine cannot hold is refused before any work.
+       */
+      virtual std::pair<double, std::string>
+      estimated_size(const unsigned int n_global_refinements) const = 0;
+
+      /**
        * Name -> boundary id of every named boundary of the mesh.
        */
       virtual std::map<std::string, dealii::types::boundary_id>
@@ -92,7 +103,7 @@ namespace dpana
 
     /**
      * Refuses, before anything is built, a mesh whose estimated number of
-     * cells @p n_cells exceeds max_cells: a one-line dpana::InputError that
+     * cells @p n_cells (Shape::estimated_size()) exceeds max_cells: a one-line dpana::InputError that
      * names @p parameter (the entry that makes the mesh that large) and the
      * estimate, instead of a std::bad_alloc after minutes of work.
      */
