@@ -87,6 +87,7 @@ namespace dpana
                                  const std::string        &path)
     {
       using parameters::parse_point;
+      parameter = path;
       lower_corner =
         parse_point<dim>(prm.get("Lower corner"), path + " / Lower corner");
       upper_corner =
@@ -159,6 +160,21 @@ namespace dpana
       return std::any_of(grading_exponents.begin(),
                          grading_exponents.end(),
                          [](const double p) { return p != 1.; });
+    }
+
+
+
+    template <int dim>
+    std::pair<double, std::string>
+    Brick<dim>::estimated_size(const unsigned int n_global_refinements) const
+    {
+      double n_coarse = dim == 2 ? 2 : 5;
+      for (const unsigned int n : subdivisions)
+        n_coarse *= n;
+      // The entry to blame: the Subdivisions if they alone are too many.
+      return {n_coarse * std::pow(2., dim * n_global_refinements),
+              n_coarse > max_cells ? parameter + " / Subdivisions" :
+                                     "Geometry / Global refinements"};
     }
 
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace dpana
 {
@@ -212,6 +213,26 @@ namespace dpana
     {
       Assert(false, dealii::ExcNotImplemented());
       return {};
+    }
+
+
+
+    // 2 triangles per quadrilateral, 4 children per refinement, and in 3D
+    // 3 tetrahedra per prism of each layer. The contact refinements, local,
+    // are left out of the estimate.
+    template <int dim>
+    std::pair<double, std::string>
+    CurvedShape<dim>::estimated_size(
+      const unsigned int n_global_refinements) const
+    {
+      dealii::Triangulation<2> quads;
+      make_quadrilaterals(quads);
+      double n_cells =
+        2. * quads.n_active_cells() * std::pow(4., n_global_refinements);
+      if constexpr (dim == 3)
+        n_cells *=
+          3. * (z_planes(0).size() - 1.) * std::pow(2., n_global_refinements);
+      return {n_cells, "Geometry / Global refinements"};
     }
 
 

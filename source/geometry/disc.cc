@@ -160,6 +160,9 @@ namespace dpana
         {
           length               = prm.get_double("Length");
           n_axial_subdivisions = prm.get_integer("Axial subdivisions");
+          // At least 2 triangles, 3 tetrahedra each, per layer.
+          check_mesh_size(6. * n_axial_subdivisions,
+                          path + " / Axial subdivisions");
           if (!(length > 0))
             throw InputError(path + " / Length: must be positive");
         }

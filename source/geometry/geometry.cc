@@ -7,6 +7,7 @@
 #include <dpana/geometry/disc.h>
 #include <dpana/geometry/geometry.h>
 #include <dpana/geometry/gmsh_file.h>
+#include <dpana/parameters/parameters.h>
 
 #include <deal.II/base/patterns.h>
 
@@ -161,6 +162,9 @@ namespace dpana
       try
         {
           s->parse_parameters(prm, "Geometry / " + t->subsection);
+          const auto [n_cells, parameter] =
+            s->estimated_size(n_global_refinements);
+          check_mesh_size(n_cells, parameter);
         }
       catch (...)
         {
@@ -184,8 +188,8 @@ namespace dpana
           std::string list;
           for (const auto &n : names)
             list += (list.empty() ? "" : ", ") + n.first;
-          throw InputError("no boundary named '" + name +
-                           "' (this geometry has: " + list + ")");
+          throw InputError("no boundary named " + parameters::quote(name) +
+                           " (this geometry has: " + list + ")");
         }
       return p->second;
     }

@@ -4,6 +4,7 @@
 
 #include <dpana/base/exceptions.h>
 #include <dpana/parameters/list_syntax.h>
+#include <dpana/parameters/parameters.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -51,8 +52,8 @@ namespace dpana
         for (unsigned int d = 0; d < dim; ++d)
           if (name == component_names[d])
             return d;
-        throw InputError(parameter + ": unknown displacement component '" +
-                         name + "' (expected " +
+        throw InputError(parameter + ": unknown displacement component " +
+                         quote(name) + " (expected " +
                          (dim == 2 ? "x or y" : "x, y or z") + ")");
       }
     } // namespace
@@ -69,13 +70,13 @@ namespace dpana
             continue;
           const auto colon = item.find(':');
           if (colon == std::string::npos)
-            throw InputError(parameter + ": item '" + item +
-                             "' has no colon (expected 'name: value')");
+            throw InputError(parameter + ": item " + quote(item) +
+                             " has no colon (expected 'name: value')");
           KeyValue kv{trim(item.substr(0, colon)),
                       trim(item.substr(colon + 1))};
           if (kv.key.empty() || kv.value.empty())
-            throw InputError(parameter + ": item '" + item +
-                             "' needs text on both sides of its colon");
+            throw InputError(parameter + ": item " + quote(item) +
+                             " needs text on both sides of its colon");
           items.push_back(kv);
         }
       return items;
@@ -103,9 +104,10 @@ namespace dpana
       char             *end;
       const double      value = std::strtod(t.c_str(), &end);
       if (t.empty() || *end != '\0')
-        throw InputError(parameter + ": '" + t + "' is not a number");
+        throw InputError(parameter + ": " + quote(t) + " is not a number");
       if (!std::isfinite(value))
-        throw InputError(parameter + ": '" + t + "' is not a finite number");
+        throw InputError(parameter + ": " + quote(t) +
+                         " is not a finite number");
       return value;
     }
 
@@ -118,7 +120,7 @@ namespace dpana
     {
       const std::vector<std::string> parts = split(text, ",");
       if (parts.size() != n)
-        throw InputError(parameter + ": '" + trim(text) + "' should be " +
+        throw InputError(parameter + ": " + quote(trim(text)) + " should be " +
                          std::to_string(n) + " numbers separated by commas");
       std::vector<double> values;
       for (const std::string &p : parts)
@@ -157,8 +159,8 @@ namespace dpana
         {
           const auto equal = item.find('=');
           if (equal == std::string::npos)
-            throw InputError(parameter + ": '" + item +
-                             "' should read 'component = value', e.g. "
+            throw InputError(parameter + ": " + quote(item) +
+                             " should read 'component = value', e.g. "
                              "'y = -0.1'");
           const unsigned int d =
             component_index(trim(item.substr(0, equal)), dim, parameter);

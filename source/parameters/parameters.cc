@@ -8,9 +8,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <cctype>
 #include <fstream>
-#include <regex>
+#include <map>
 #include <sstream>
+#include <vector>
 
 namespace dpana
 {
@@ -36,6 +38,38 @@ namespace dpana
         return out;
       }
 
+      // A byte as it may appear in a message: printable ASCII as itself,
+      // anything else as \xNN.
+      std::string
+      printable(const char c)
+      {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f)
+          return std::string(1, c);
+        const char *hex = "0123456789abcdef";
+        return std::string("\\x") + hex[byte / 16] + hex[byte % 16];
+      }
+
+      // The last guard of every message printed: printable bytes only, and
+      // no word (e.g. a number of a million digits that reached a message
+      // unquoted) longer than 100 characters.
+      std::string
+      printable_line(const std::string &message)
+      {
+        const std::size_t max_word = 100;
+        std::string       out;
+        std::size_t       word = 0;
+        for (const char c : message)
+          {
+            word = c == ' ' ? 0 : word + 1;
+            if (word <= max_word)
+              out += printable(c);
+            else if (word == max_word + 1)
+              out += "...";
+          }
+        return out;
+      }
+
       std::string
       strip_comment(const std::string &line)
       {
@@ -53,79 +87,161 @@ namespace dpana
 
 
 
-    // The top level of the file is read line by line; a subsection counter
-    // tells the top-level lines from the others. The values are checked
-    // here because they decide what is declared: a wrong dimension would
-    // otherwise surface as a confusing list of undeclared entries.
+    namespace
+    {
+      // One statement of a parameter file: a logical line (continuation
+      // lines joined, comment stripped), its first word and the rest.
+      struct Statement
+      {
+        unsigned int line;
+        std::string  keyword;
+        std::string  rest;
+      };
+
+      // The statements of a file, with the ParameterHandler's syntax: '#'
+      // starts a comment unless escaped, a trailing backslash continues the
+      // line. Blank lines are skipped.
+      std::vector<Statement>
+      read_statements(std::istream &in)
+      {
+        std::vector<Statement> statements;
+        std::string            line, piece;
+        unsigned int           line_number = 0, first_line = 1;
+        while (std::getline(in, piece))
+          {
+            ++line_number;
+            if (line.empty())
+              first_line = line_number;
+            line += dealii::Utilities::trim(piece);
+            if (!line.empty() && line.back() == '\\')
+              {
+                line.pop_back();
+                continue;
+              }
+            std::istringstream words(strip_comment(line));
+            line.clear();
+            Statement s{first_line, "", ""};
+            if (!(words >> s.keyword))
+              continue;
+            std::getline(words, s.rest);
+            statements.push_back(s);
+          }
+        return statements;
+      }
+
+      bool
+      is_keyword(const Statement &s, const std::string &lower_case)
+      {
+        std::string upper = lower_case;
+        for (char &c : upper)
+          c = static_cast<char>(std::toupper(c));
+        return s.keyword == lower_case || s.keyword == upper;
+      }
+
+      // The name and value of a "set NAME = VALUE" statement, whitespace
+      // collapsed; no name if the statement has no '='.
+      std::pair<std::string, std::string>
+      entry_of(const Statement &s)
+      {
+        const auto equal = s.rest.find('=');
+        if (equal == std::string::npos)
+          return {"", ""};
+        return {collapse_whitespace(s.rest.substr(0, equal)),
+                collapse_whitespace(s.rest.substr(equal + 1))};
+      }
+
+      // "a.prm, line 12: ", as in the messages of the ParameterHandler.
+      std::string
+      where(const std::string &filename, const unsigned int line)
+      {
+        return filename + ", line " + std::to_string(line) + ": ";
+      }
+    } // namespace
+
+
+
+    // The top level of the file is read statement by statement; a
+    // subsection counter tells the top-level statements from the others.
+    // The values are checked here because they decide what is declared: a
+    // wrong dimension would otherwise surface as a confusing list of
+    // undeclared entries.
     FileOutline
     scan_file(const std::string &filename)
     {
       std::ifstream in(filename);
       if (!in)
         throw InputError("cannot read parameter file '" + filename + "'");
-      // "a.prm, line 12: ", as in the messages of parse_file().
-      const auto where = [&filename](const unsigned int n) {
-        return filename + ", line " + std::to_string(n) + ": ";
-      };
       FileOutline  outline;
-      std::string  line, piece;
-      unsigned int depth = 0, line_number = 0, first_line = 1;
-      while (std::getline(in, piece))
-        {
-          ++line_number;
-          if (line.empty())
-            first_line = line_number;
-          // A line ending in a backslash continues on the next one.
-          line += dealii::Utilities::trim(piece);
-          if (!line.empty() && line.back() == '\\')
-            {
-              line.pop_back();
-              continue;
-            }
-          std::istringstream words(strip_comment(line));
-          line.clear();
-          std::string first;
-          if (!(words >> first))
-            continue;
-          std::string rest;
-          std::getline(words, rest);
-          if (first == "subsection" || first == "SUBSECTION")
-            {
-              if (depth == 0 && collapse_whitespace(rest) == "Contact")
-                outline.has_contact = true;
-              ++depth;
-            }
-          else if ((first == "end" || first == "END") && depth > 0)
-            --depth;
-          else if ((first == "set" || first == "SET") && depth == 0)
-            {
-              const auto equal = rest.find('=');
-              if (equal == std::string::npos)
-                continue;
-              const std::string name =
-                collapse_whitespace(rest.substr(0, equal));
-              const std::string value =
-                collapse_whitespace(rest.substr(equal + 1));
-              if (name == "Dimension")
-                {
-                  if (value != "2" && value != "3")
-                    throw InputError(where(first_line) +
-                                     "Dimension: must be 2 or 3, got '" +
-                                     value + "'");
-                  outline.dimension = value == "2" ? 2 : 3;
-                }
-              else if (name == "Number of bodies")
-                {
-                  if (value != "1" && value != "2")
-                    throw InputError(where(first_line) +
-                                     "Number of bodies: must be 1 or 2, got '" +
-                                     value + "'");
-                  outline.n_bodies = value == "1" ? 1 : 2;
-                }
-            }
-        }
+      unsigned int depth = 0;
+      for (const Statement &s : read_statements(in))
+        if (is_keyword(s, "subsection"))
+          {
+            if (depth == 0 && collapse_whitespace(s.rest) == "Contact")
+              outline.has_contact = true;
+            ++depth;
+          }
+        else if (is_keyword(s, "end") && depth > 0)
+          --depth;
+        else if (is_keyword(s, "set") && depth == 0)
+          {
+            const auto [name, value] = entry_of(s);
+            if (name == "Dimension")
+              {
+                if (value != "2" && value != "3")
+                  throw InputError(where(filename, s.line) +
+                                   "Dimension: must be 2 or 3, got " +
+                                   quote(value));
+                outline.dimension = value == "2" ? 2 : 3;
+              }
+            else if (name == "Number of bodies")
+              {
+                if (value != "1" && value != "2")
+                  throw InputError(where(filename, s.line) +
+                                   "Number of bodies: must be 1 or 2, got " +
+                                   quote(value));
+                outline.n_bodies = value == "1" ? 1 : 2;
+              }
+          }
       return outline;
     }
+
+
+
+    namespace
+    {
+      // Every entry is remembered with its subsection path and the line
+      // that set it; the second "set" of the same entry in the same
+      // subsection is an error. Subsections entered twice count as one, as
+      // for the ParameterHandler.
+      void
+      check_entries_set_once(std::istream &in, const std::string &filename)
+      {
+        std::vector<std::string>            path;
+        std::map<std::string, unsigned int> first_set;
+        for (const Statement &s : read_statements(in))
+          if (is_keyword(s, "subsection"))
+            path.push_back(collapse_whitespace(s.rest));
+          else if (is_keyword(s, "end") && !path.empty())
+            path.pop_back();
+          else if (is_keyword(s, "set"))
+            {
+              const std::string name = entry_of(s).first;
+              std::string       key, section;
+              for (const std::string &p : path)
+                {
+                  key += p + '\n';
+                  section += (section.empty() ? "" : " / ") + p;
+                }
+              const auto [it, inserted] = first_set.emplace(key + name, s.line);
+              if (!inserted)
+                throw InputError(
+                  where(filename, s.line) + "entry " + quote(name) +
+                  (section.empty() ? "" : " of subsection " + quote(section)) +
+                  " is set twice (first on line " + std::to_string(it->second) +
+                  ")");
+            }
+      }
+    } // namespace
 
 
 
@@ -156,32 +272,66 @@ namespace dpana
         {
           throw InputError(one_line_message(e));
         }
+      std::ifstream again(filename);
+      check_entries_set_once(again, filename);
     }
 
 
 
     std::string
+    quote(const std::string &text)
+    {
+      const std::size_t max_length = 60;
+      std::string       out;
+      for (const char c : text)
+        {
+          if (out.size() >= max_length)
+            return "'" + out + "...'";
+          out += printable(c);
+        }
+      return "'" + out + "'";
+    }
+
+
+
+    // The ParameterHandler's "Line <12> of file <a.prm>: ... <name>"
+    // becomes "a.prm, line 12: ... 'name'": the text in angle brackets is
+    // input (a value, an entry name) and goes through quote(), except the
+    // descriptions of patterns ("<[Double 0...1 (inclusive)]>"), which are
+    // the program's own.
+    std::string
     one_line_message(const std::exception &e)
     {
-      if (const auto *d = dynamic_cast<const dealii::ExceptionBase *>(&e))
+      const auto *d = dynamic_cast<const dealii::ExceptionBase *>(&e);
+      if (d == nullptr)
+        return printable_line(collapse_whitespace(e.what()));
+      std::ostringstream info;
+      d->print_info(info);
+      std::string message = collapse_whitespace(info.str());
+      if (message.empty())
+        message = d->get_exc_name();
+      const std::string prefix = "Line <";
+      const auto        file   = message.find("> of file <");
+      const auto        colon  = message.find(">:");
+      if (message.rfind(prefix, 0) == 0 && file != std::string::npos &&
+          colon != std::string::npos && file < colon)
+        message = message.substr(file + 11, colon - file - 11) + ", line " +
+                  message.substr(prefix.size(), file - prefix.size()) + ":" +
+                  message.substr(colon + 2);
+      std::string out;
+      for (std::size_t i = 0; i < message.size(); ++i)
         {
-          std::ostringstream info;
-          d->print_info(info);
-          std::string message = collapse_whitespace(info.str());
-          if (message.empty())
-            message = d->get_exc_name();
-          // The ParameterHandler's "Line <12> of file <a.prm>: ... <name>"
-          // becomes "a.prm, line 12: ... 'name'".
-          message =
-            std::regex_replace(message,
-                               std::regex(
-                                 "^Line <([0-9]+)> of file <([^>:]*)>?:"),
-                               "$2, line $1:");
-          message =
-            std::regex_replace(message, std::regex("<([^<>]*)>"), "'$1'");
-          return message;
+          const auto close = message.find('>', i);
+          const auto open  = message.find('<', i + 1);
+          if (message[i] != '<' || close == std::string::npos ||
+              (open != std::string::npos && open < close))
+            out += message[i];
+          else if (message[i + 1] == '[')
+            out += message.substr(i + 1, close - i - 1), i = close;
+          else
+            out += quote(message.substr(i + 1, close - i - 1)), i = close;
         }
-      return collapse_whitespace(e.what());
+      return printable_line(out);
     }
   } // namespace parameters
 } // namespace dpana

@@ -72,7 +72,15 @@ namespace dpana
       std::string
       description() const override;
 
+      /**
+       * 2 triangles per rectangle (5 tetrahedra per brick) of the
+       * Subdivisions, 2^dim children per refinement.
+       */
+      std::pair<double, std::string>
+      estimated_size(const unsigned int n_global_refinements) const override;
+
     private:
+      std::string               parameter;
       dealii::Point<dim>        lower_corner;
       dealii::Point<dim>        upper_corner;
       std::vector<unsigned int> subdivisions;

@@ -99,6 +99,13 @@ namespace dpana
         dealii::Triangulation<dim> &tria,
         const unsigned int          n_global_refinements) const override;
 
+      /**
+       * 2 triangles per quadrilateral of the coarse mesh, 4 children per
+       * refinement; in 3D times 3 tetrahedra per prism of each layer.
+       */
+      std::pair<double, std::string>
+      estimated_size(const unsigned int n_global_refinements) const override;
+
     protected:
       /**
        * The half shape, or the quarter (x >= Centre_x) if @p quarter.

@@ -20,11 +20,15 @@ namespace dpana
      * of its boundary element as boundary id, and id 0 to the boundary faces
      * that belong to no physical group. The names of the tags come from the
      * $PhysicalNames section, which GridIn skips; it is read here, already
-     * in parse_parameters(), so that a missing file or an unnamed boundary
-     * is reported before any work is done. The boundary names are these
-     * physical names (of the groups of dimension dim - 1); a boundary face
-     * in no named group is an input error. The global refinements act on
-     * the simplices read.
+     * in parse_parameters(), by read_gmsh_sections(), which also checks the
+     * sections GridIn reads without checking them (a file GridIn would
+     * misread, a node tag given twice, a cell of zero measure), so that a
+     * bad file, a missing file or an unnamed boundary is reported on one
+     * line before any work is done. An error GridIn reports itself (e.g. an
+     * element type it does not know) is given with GridIn's reason. The
+     * boundary names are these physical names (of the groups of dimension dim -
+     * 1); a boundary face in no named group is an input error. The global
+     * refinements act on the simplices read.
      */
     template <int dim>
     class GmshFile : public Shape<dim>
@@ -49,6 +53,12 @@ namespace dpana
       boundary_names() const override;
 
       /**
+       * The cells of the file, 2^dim children per refinement.
+       */
+      std::pair<double, std::string>
+      estimated_size(const unsigned int n_global_refinements) const override;
+
+      /**
        * The file name in quotes.
        */
       std::string
@@ -58,6 +68,7 @@ namespace dpana
       std::string                                       mesh_file;
       std::string                                       parameter;
       std::map<std::string, dealii::types::boundary_id> names;
+      unsigned long long                                n_cells = 0;
 
       void
       read_boundary_names();

@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace dpana
 {
@@ -55,6 +56,16 @@ namespace dpana
                            const unsigned int n_global_refinements) const = 0;
 
       /**
+       * The number of cells of the mesh with @p n_global_refinements,
+       * estimated before it is built, and the entry that makes it that
+       * large (e.g. "Geometry / Rectangle / Subdivisions"). Geometry<dim>
+       * hands both to check_mesh_size() as soon as the entries are read,
+       * so that a mesh this machine cannot hold is refused before any work.
+       */
+      virtual std::pair<double, std::string>
+      estimated_size(const unsigned int n_global_refinements) const = 0;
+
+      /**
        * Name -> boundary id of every named boundary of the mesh.
        */
       virtual std::map<std::string, dealii::types::boundary_id>
@@ -80,6 +91,24 @@ namespace dpana
     unnamed_boundary_id(
       const dealii::Triangulation<dim>                        &tria,
       const std::map<std::string, dealii::types::boundary_id> &names);
+
+
+
+    /**
+     * The largest mesh a run accepts: 5e7 cells. A linear simplex mesh needs
+     * about 1 kB per cell for the triangulation, the degrees of freedom and
+     * the stiffness matrix, so that 5e7 cells already ask for some 50 GB.
+     */
+    constexpr double max_cells = 5e7;
+
+    /**
+     * Refuses, before anything is built, a mesh whose estimated number of
+     * cells @p n_cells (Shape::estimated_size()) exceeds max_cells: a one-line dpana::InputError that
+     * names @p parameter (the entry that makes the mesh that large) and the
+     * estimate, instead of a std::bad_alloc after minutes of work.
+     */
+    void
+    check_mesh_size(const double n_cells, const std::string &parameter);
 
 
 

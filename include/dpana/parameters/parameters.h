@@ -53,15 +53,30 @@ namespace dpana
      * Reads a parameter file; any error of the ParameterHandler (an unknown
      * entry or subsection, a value that does not match the entry's pattern,
      * a missing "end") becomes a dpana::InputError with a one-line message
-     * that names the file, the line and the entry.
+     * that names the file, the line and the entry. An entry set twice in
+     * the same subsection is an error too ("a.prm, line 9: entry 'Radius'
+     * of subsection 'Body 1 / Geometry' is already set on line 7"): the
+     * ParameterHandler would keep the last value without a word.
      */
     void
     parse_file(dealii::ParameterHandler &prm, const std::string &filename);
 
     /**
+     * The one way a message quotes text of the input: @p text in single
+     * quotes, every byte that is not printable ASCII (a control character,
+     * an escape sequence, a byte of a binary file) written as `\xNN`, and
+     * cut after 60 characters with "..." appended, so that a message stays
+     * one short, harmless line whatever the input holds.
+     */
+    std::string
+    quote(const std::string &text);
+
+    /**
      * The message of an exception on one line: deal.II's multi-line
      * exception texts are reduced to their "additional information" and
-     * their whitespace collapsed.
+     * their whitespace collapsed; the text the ParameterHandler quotes in
+     * angle brackets is quoted by quote(). The message as a whole keeps
+     * printable bytes only and at most 1000 characters.
      */
     std::string
     one_line_message(const std::exception &e);

@@ -3,12 +3,14 @@
 // ---------------------------------------------------------------------------
 //
 // Checks of user input that do not need a run of the executable: the list
-// syntax of the boundary entries, the material checks, and a boundary name
+// syntax of the boundary entries, the quoting of input in messages, the
+// material checks, and a boundary name
 // that the mesh declares but no face carries.
 
 #include <dpana/base/exceptions.h>
 #include <dpana/body/body.h>
 #include <dpana/parameters/list_syntax.h>
+#include <dpana/parameters/parameters.h>
 
 #include <deal.II/grid/grid_generator.h>
 
@@ -92,4 +94,32 @@ TEST(Input, BoundaryNameCarriedByNoFace)
                 "Body 1 / Boundary conditions / Fixed: no face of the mesh "
                 "carries boundary 'hole' (id 7)");
     }
+}
+
+
+
+// Every message quotes input through parameters::quote(): unprintable bytes
+// as \xNN, at most 60 characters.
+TEST(Input, QuotedTextIsPrintableAndShort)
+{
+  EXPECT_EQ(parameters::quote("left"), "'left'");
+  EXPECT_EQ(parameters::quote("a\x1b[2Jb\n"), "'a\\x1b[2Jb\\x0a'");
+  const std::string digits(10000000, '1');
+  EXPECT_EQ(parameters::quote(digits), "'" + digits.substr(0, 60) + "...'");
+  try
+    {
+      parameters::parse_double(digits, "Body 1 / Loads / Pressure");
+      FAIL() << "no exception";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_EQ(std::string(e.what()),
+                "Body 1 / Loads / Pressure: '" + digits.substr(0, 60) +
+                  "...' is not a finite number");
+    }
+  // The last guard of the printed line: no unprintable byte, no endless
+  // word, whatever the exception says.
+  const std::string line =
+    parameters::one_line_message(std::runtime_error("x\x07 " + digits));
+  EXPECT_EQ(line, "x\\x07 " + digits.substr(0, 100) + "...");
 }

@@ -113,3 +113,35 @@ TEST(PreScan, Errors)
               .find("cannot read parameter file '/nonexistent/dpana.prm'"),
             std::string::npos);
 }
+
+// The same entry set twice in one subsection is an error; the same name in
+// two subsections, or a subsection entered twice with different entries,
+// is not.
+TEST(PreScan, EntrySetTwice)
+{
+  dealii::ParameterHandler prm;
+  prm.declare_entry("Radius", "1", dealii::Patterns::Double());
+  prm.enter_subsection("Body 1");
+  prm.declare_entry("Radius", "1", dealii::Patterns::Double());
+  prm.declare_entry("Width", "1", dealii::Patterns::Double());
+  prm.leave_subsection();
+  const std::string good = "set Radius = 2\n"
+                           "subsection Body 1\n  set Radius = 3\nend\n"
+                           "subsection Body 1\n  set Width = 4\nend\n";
+  EXPECT_NO_THROW(parameters::parse_file(prm, write_file("once.prm", good)));
+  const std::string twice = good + "subsection Body 1\n"
+                                   "  set   Radius = 5 # again\n"
+                                   "end\n";
+  try
+    {
+      parameters::parse_file(prm, write_file("twice.prm", twice));
+      FAIL() << "no exception";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find(
+                  "twice.prm, line 9: entry 'Radius' of subsection "
+                  "'Body 1' is set twice (first on line 3)"),
+                std::string::npos);
+    }
+}
