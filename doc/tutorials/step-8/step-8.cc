@@ -53,36 +53,41 @@ namespace step8
   //
   // The block is the parameter file floating_block.prm of this folder. The
   // cases of this step differ by the traction (t_x, t_y) on the top face
-  // (MPa), the friction coefficient and the solver; a ParameterHandler
-  // reads a file from top to bottom and a later `set` of an entry replaces
-  // an earlier one, so each case is the file followed by the text below.
+  // (MPa), the friction coefficient, the solver and the output directory.
+  // dpana refuses an entry set twice in one subsection (a second `set`
+  // silently replacing the first would hide typing errors), so each case is
+  // the file with the values of these entries replaced in place.
   std::string
-  case_parameters(const double       tx,
-                  const double       ty,
-                  const double       mu,
-                  const std::string &solver)
+  with_entry(const std::string &text,
+             const std::string &entry,
+             const std::string &value)
   {
-    std::ostringstream text;
-    text << std::setprecision(17) << "subsection Body 1\n"
-         << "  subsection Loads\n    set Traction = top: " << tx << ", " << ty
-         << "\n  end\nend\nsubsection Contact\n"
-         << "  set Friction coefficient = " << mu
-         << "\n  set Solver = " << solver << "\nend\n";
-    return text.str();
+    const std::string::size_type at = text.find("set " + entry);
+    AssertThrow(at != std::string::npos,
+                dealii::ExcMessage("floating_block.prm has no entry " + entry));
+    const std::string::size_type equal = text.find('=', at);
+    const std::string::size_type end   = text.find('\n', equal);
+    return text.substr(0, equal + 1) + " " + value + text.substr(end);
   }
 
-  // The whole parameter text of a case: the file, then the changes.
+  // The whole parameter text of a case.
   std::string
   floating_block(const double       tx,
                  const double       ty,
                  const double       mu,
-                 const std::string &solver = "splitting_active_set")
+                 const std::string &solver    = "splitting_active_set",
+                 const std::string &directory = "output/floating_block")
   {
     std::ifstream file(std::string(DPANA_STEP_DIR) + "/floating_block.prm");
     AssertThrow(file, dealii::ExcMessage("cannot read floating_block.prm"));
-    std::ostringstream text;
+    std::ostringstream text, traction, friction;
     text << file.rdbuf();
-    return text.str() + case_parameters(tx, ty, mu, solver);
+    traction << std::setprecision(17) << "top: " << tx << ", " << ty;
+    friction << std::setprecision(17) << mu;
+    std::string prm = with_entry(text.str(), "Traction", traction.str());
+    prm             = with_entry(prm, "Friction coefficient", friction.str());
+    prm             = with_entry(prm, "Solver", solver);
+    return with_entry(prm, "Directory", directory);
   }
 
   // A quiet run of a parameter text with the Scene, without output files:
@@ -256,9 +261,8 @@ namespace step8
     Outcome           o;
     const std::string name = c.name + "_" + solver;
     const std::string file = "output/" + name + ".prm";
-    std::ofstream(file) << floating_block(c.tx, c.ty, c.mu, solver)
-                        << "subsection Output\n  set Directory = output/"
-                        << name << "\nend\n";
+    std::ofstream(file) << floating_block(
+      c.tx, c.ty, c.mu, solver, "output/" + name);
 
     // As the executable: catch what it would print.
     std::ostringstream log;
