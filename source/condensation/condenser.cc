@@ -227,7 +227,7 @@ namespace dpana
                  *constraints.get_constraint_entries(it.row()))
               W(position[j], c) += a * it.value();
 
-      cholesky.schur_factor().triangularView<Eigen::Lower>().solveInPlace(W);
+      cholesky.solve_schur_factor(W);
       A.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
       A = A.selfadjointView<Eigen::Lower>();
     }

@@ -40,10 +40,10 @@ namespace dpana
                       std::vector<int>                  &perm)
         {
           if (this->m_cholmodFactor)
-            cholmod_free_factor(&this->m_cholmodFactor, &this->m_cholmod);
+            cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
           cholmod_sparse A = Eigen::viewAsCholmod(
             K_lower.template selfadjointView<Eigen::Lower>());
-          cholmod_common &c         = this->m_cholmod;
+          cholmod_common &c         = this->cholmod();
           const int       nmethods  = c.nmethods;
           const int       ordering  = c.method[0].ordering;
           const int       postorder = c.postorder;
@@ -342,6 +342,54 @@ namespace dpana
             }
         }
       return L22;
+    }
+
+
+
+    // The forward substitution with L_22, supernode by supernode of the
+    // last block and in place: the rows of W of the supernode's columns are
+    // solved with its dense diagonal block (TRSM), then the product of its
+    // block below the diagonal with them (GEMM) is subtracted from the rows
+    // of W its row indices name. The columns of a supernode that straddles
+    // the start n0 of the block and lie before it are skipped: W vanishes
+    // on their rows.
+    void
+    SparseCholesky::solve_schur_factor(Eigen::MatrixXd &W) const
+    {
+      AssertThrow(impl->factorized && !last.empty(),
+                  dealii::ExcMessage(
+                    "SparseCholesky: factorize_with_last() first."));
+      AssertDimension(W.rows(), last.size());
+      const cholmod_factor &L = impl->llt.factor();
+      AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
+      const int     n0    = L.n - last.size();
+      const int    *super = static_cast<const int *>(L.super);
+      const int    *pi    = static_cast<const int *>(L.pi);
+      const int    *px    = static_cast<const int *>(L.px);
+      const int    *rows  = static_cast<const int *>(L.s);
+      const double *x     = static_cast<const double *>(L.x);
+      using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+      for (std::size_t s = 0; s < L.nsuper; ++s)
+        {
+          if (super[s + 1] <= n0)
+            continue;
+          const int   nscol = super[s + 1] - super[s];
+          const int   nsrow = pi[s + 1] - pi[s];
+          const int   first = std::max(super[s], n0);
+          const int   k0    = first - super[s];
+          const int   ncols = super[s + 1] - first;
+          const Block S(x + px[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
+          auto        Wd = W.middleRows(first - n0, ncols);
+          S.block(k0, k0, ncols, ncols)
+            .triangularView<Eigen::Lower>()
+            .solveInPlace(Wd);
+          if (nsrow == nscol)
+            continue;
+          const Eigen::MatrixXd update =
+            S.block(nscol, k0, nsrow - nscol, ncols) * Wd;
+          for (int k = 0; k < nsrow - nscol; ++k)
+            W.row(rows[pi[s] + nscol + k] - n0) -= update.row(k);
+        }
     }
 
 

@@ -121,9 +121,11 @@ namespace dpana
        * right-hand side $B$ that vanishes outside them,
        * $B^T K_r^{-1} B = W^T W$ with $W = L_{22}^{-1} B_\Gamma$.
        *
-       * This, schur_factor() and schur_dofs() are what the Schur route of
-       * the condensation needs of a factorisation; another back end (a
-       * multifrontal solver with a Schur option) provides the same three.
+       * This, solve_schur_factor() and schur_dofs() are what the Schur route
+       * of the condensation needs of a factorisation; another back end (a
+       * multifrontal solver with a Schur option, which returns the Schur
+       * complement itself: its dense Cholesky factor then plays the part of
+       * $L_{22}$) provides the same three.
        */
       void
       factorize_with_last(const dealii::SparseMatrix<double>      &K,
@@ -132,10 +134,20 @@ namespace dpana
 
       /**
        * The dense lower triangular $L_{22}$ of factorize_with_last(): row
-       * and column k belong to the degree of freedom schur_dofs()[k].
+       * and column k belong to the degree of freedom schur_dofs()[k]. A
+       * copy of $n_\Gamma^2$ numbers, for checks; the condensation uses
+       * solve_schur_factor().
        */
       Eigen::MatrixXd
       schur_factor() const;
+
+      /**
+       * $W \leftarrow L_{22}^{-1} W$ for @p W of n_Gamma rows (in the order
+       * of schur_dofs()), in place, working on the supernodes of the factor
+       * itself (no copy of $L_{22}$).
+       */
+      void
+      solve_schur_factor(Eigen::MatrixXd &W) const;
 
       /**
        * The free degrees of freedom of the last block, in the order of the

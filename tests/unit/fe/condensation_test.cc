@@ -74,6 +74,28 @@ namespace
   using dpana::test::hertz_prm;
   using dpana::test::make_scene;
 
+  // Body 2 of hertz_prm(): a 40 x 40 foundation under the plane y = 0, held
+  // only in x (free to move along the axis), pressed from below.
+  std::string
+  floating_foundation()
+  {
+    return "  subsection Geometry\n"
+           "    set Type = rectangle\n"
+           "    subsection Rectangle\n"
+           "      set Lower corner = 0, -40\n"
+           "      set Upper corner = 40, 0\n"
+           "      set Subdivisions = 8, 8\n"
+           "    end\n"
+           "  end\n"
+           "  subsection Boundary conditions\n"
+           "    set Symmetry = left\n"
+           "    set Fixed = bottom: x\n"
+           "  end\n"
+           "  subsection Loads\n"
+           "    set Pressure = bottom: 100\n"
+           "  end\n";
+  }
+
   // The Hertz cylinder (quarter disc R = 40, 100 kN/mm on the half model)
   // on a rigid plane, with m contact refinements.
 } // namespace
@@ -191,21 +213,7 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
 // one the contact run solves, to the last digit.
 TEST(Condensation, ContactProblemOfTwoFloatingBodies)
 {
-  const std::string foundation = "  subsection Geometry\n"
-                                 "    set Type = rectangle\n"
-                                 "    subsection Rectangle\n"
-                                 "      set Lower corner = 0, -40\n"
-                                 "      set Upper corner = 40, 0\n"
-                                 "      set Subdivisions = 8, 8\n"
-                                 "    end\n"
-                                 "  end\n"
-                                 "  subsection Boundary conditions\n"
-                                 "    set Symmetry = left\n"
-                                 "    set Fixed = bottom: x\n"
-                                 "  end\n"
-                                 "  subsection Loads\n"
-                                 "    set Pressure = bottom: 100\n"
-                                 "  end\n";
+  const std::string foundation = floating_foundation();
   auto              s = make_scene<2>(hertz_prm(1, 15, 0.3, foundation), 2);
   s->assemble();
   s->build_contact_surface();
@@ -352,18 +360,7 @@ TEST(Condensation, SchurRouteEqualsBlockedSolves2DHeldBody)
 // floating along its axis) on a floating foundation.
 TEST(Condensation, SchurRouteEqualsBlockedSolves2DTwoFloatingBodies)
 {
-  const std::string foundation = "  subsection Geometry\n"
-                                 "    set Type = rectangle\n"
-                                 "    subsection Rectangle\n"
-                                 "      set Lower corner = 0, -40\n"
-                                 "      set Upper corner = 40, 0\n"
-                                 "      set Subdivisions = 8, 8\n"
-                                 "    end\n"
-                                 "  end\n"
-                                 "  subsection Boundary conditions\n"
-                                 "    set Symmetry = left\n"
-                                 "    set Fixed = bottom: x\n"
-                                 "  end\n";
+  const std::string foundation = floating_foundation();
   auto              s = make_scene<2>(hertz_prm(2, 15, 0.3, foundation), 2);
   expect_routes_agree(*s);
 }

@@ -68,6 +68,53 @@ namespace
     }
   };
 
+  // The matrix of @p A and the right-hand side @p b assembled with
+  // @p constraints as a body would: from "element" contributions, here the
+  // diagonal entries and the off-diagonal pairs as 2 x 2 elements with zero
+  // diagonal.
+  struct CondensedSystem
+  {
+    dealii::SparsityPattern      pattern;
+    dealii::SparseMatrix<double> K;
+    dealii::Vector<double>       f;
+
+    CondensedSystem(const TestMatrix                        &A,
+                    const dealii::AffineConstraints<double> &constraints,
+                    const Eigen::VectorXd                   &b)
+    {
+      const unsigned int             N = b.size();
+      dealii::DynamicSparsityPattern dsp(N, N);
+      for (unsigned int i = 0; i < N; ++i)
+        for (unsigned int j = 0; j < N; ++j)
+          if (A.dense(i, j) != 0.0)
+            dsp.add(i, j);
+      constraints.condense(dsp);
+      pattern.copy_from(dsp);
+      K.reinit(pattern);
+      f.reinit(N);
+      for (unsigned int i = 0; i < N; ++i)
+        for (unsigned int j = i; j < N; ++j)
+          if (A.dense(i, j) != 0.0)
+            {
+              std::vector<dealii::types::global_dof_index> dofs = {i};
+              dealii::FullMatrix<double>                   local(1, 1);
+              dealii::Vector<double>                       rhs(1);
+              local(0, 0) = A.dense(i, i);
+              rhs[0]      = b(i);
+              if (j != i)
+                {
+                  dofs        = {i, j};
+                  local       = dealii::FullMatrix<double>(2, 2);
+                  local(0, 1) = local(1, 0) = A.dense(i, j);
+                  rhs.reinit(2);
+                }
+              constraints.distribute_local_to_global(local, rhs, dofs, K, f);
+            }
+    }
+  };
+
+
+
   Eigen::MatrixXd
   random_matrix(const unsigned int rows, const unsigned int cols)
   {
@@ -131,40 +178,10 @@ TEST(SparseCholesky, ReducedSystemMatchesExplicitElimination)
   constraints.set_inhomogeneity(N - 1, 0.25);
   constraints.close();
 
-  // Assemble the condensed matrix and right-hand side as a body would: from
-  // "element" contributions, here single entries of the full matrix.
-  dealii::DynamicSparsityPattern dsp(N, N);
-  for (unsigned int i = 0; i < N; ++i)
-    for (unsigned int j = 0; j < N; ++j)
-      if (A.dense(i, j) != 0.0)
-        dsp.add(i, j);
-  constraints.condense(dsp);
-  dealii::SparsityPattern pattern;
-  pattern.copy_from(dsp);
-  dealii::SparseMatrix<double> K(pattern);
-  dealii::Vector<double>       f(N);
-  const Eigen::MatrixXd        b = random_matrix(N, 1);
-  for (unsigned int i = 0; i < N; ++i)
-    {
-      dealii::FullMatrix<double>                   local(1, 1);
-      dealii::Vector<double>                       local_rhs(1);
-      std::vector<dealii::types::global_dof_index> dofs = {i};
-      local(0, 0)                                       = A.dense(i, i);
-      local_rhs[0]                                      = b(i, 0);
-      constraints.distribute_local_to_global(local, local_rhs, dofs, K, f);
-      for (unsigned int j = 0; j < N; ++j)
-        if (j != i && A.dense(i, j) != 0.0)
-          {
-            // An off-diagonal pair as a 2x2 element with zero diagonal.
-            if (j < i)
-              continue;
-            dealii::FullMatrix<double>                   pair(2, 2);
-            dealii::Vector<double>                       zero(2);
-            std::vector<dealii::types::global_dof_index> pdofs = {i, j};
-            pair(0, 1) = pair(1, 0) = A.dense(i, j);
-            constraints.distribute_local_to_global(pair, zero, pdofs, K, f);
-          }
-    }
+  const Eigen::MatrixXd         b = random_matrix(N, 1);
+  CondensedSystem               system(A, constraints, b.col(0));
+  dealii::SparseMatrix<double> &K = system.K;
+  dealii::Vector<double>       &f = system.f;
 
   SparseCholesky cholesky;
   cholesky.factorize(K, constraints);
@@ -217,27 +234,8 @@ TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
   constraints.add_line(7 * n + 5);
   constraints.add_entry(7 * n + 5, 7 * n + 6, 1.0);
   constraints.close();
-  dealii::DynamicSparsityPattern dsp(N, N);
-  for (unsigned int i = 0; i < N; ++i)
-    for (unsigned int j = 0; j < N; ++j)
-      if (A.dense(i, j) != 0.0)
-        dsp.add(i, j);
-  constraints.condense(dsp);
-  dealii::SparsityPattern pattern;
-  pattern.copy_from(dsp);
-  dealii::SparseMatrix<double> K(pattern);
-  for (unsigned int i = 0; i < N; ++i)
-    for (unsigned int j = 0; j < N; ++j)
-      if (A.dense(i, j) != 0.0)
-        {
-          dealii::FullMatrix<double> local(1, 1);
-          local(0, 0) = A.dense(i, j);
-          constraints.distribute_local_to_global(
-            local,
-            std::vector<dealii::types::global_dof_index>{i},
-            std::vector<dealii::types::global_dof_index>{j},
-            K);
-        }
+  const CondensedSystem system(A, constraints, Eigen::VectorXd::Zero(N));
+  const auto           &K = system.K;
 
   std::vector<unsigned int> surface;
   for (unsigned int j = 0; j < n; ++j)
@@ -294,6 +292,14 @@ TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
   EXPECT_LT((L22 - L_S).norm(), 1e-12 * L_S.norm());
   EXPECT_EQ(Eigen::MatrixXd(L22.triangularView<Eigen::StrictlyUpper>()).norm(),
             0.0);
+
+  // The forward substitution on the supernodes equals the dense one.
+  const Eigen::MatrixXd B = random_matrix(ng, 5);
+  Eigen::MatrixXd       W = B;
+  cholesky.solve_schur_factor(W);
+  const Eigen::MatrixXd W_reference =
+    L_S.triangularView<Eigen::Lower>().solve(B);
+  EXPECT_LT((W - W_reference).norm(), 1e-12 * W_reference.norm());
 
   const Eigen::MatrixXd b           = random_matrix(N, 3);
   const Eigen::MatrixXd u           = cholesky.solve(b);
