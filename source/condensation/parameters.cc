@@ -24,7 +24,8 @@ namespace dpana
                         "256",
                         dealii::Patterns::Integer(1),
                         "Columns of V handed at once to the blocked sparse "
-                        "Cholesky solves of the condensation.");
+                        "Cholesky solves of the condensation (Condensation "
+                        "method = blocked solves).");
     }
 
 

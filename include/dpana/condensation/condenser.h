@@ -64,10 +64,11 @@ namespace dpana
      * @f[
      *   A = W_\Gamma^T W_\Gamma ,
      * @f]
-     *   one dense triangular solve and one symmetric rank update of size
-     *   n_Gamma x n_c (BLAS 3), with the one factorisation
-     *   (SparseCholesky::factorize_with_last()). A is symmetric by
-     *   construction.
+     *   one triangular solve with L_22, on the dense supernodes of the
+     *   factor itself (SparseCholesky::solve_schur_factor()), and one
+     *   symmetric rank update, dense work of size n_Gamma x n_c after the
+     *   one factorisation (SparseCholesky::factorize_with_last()); no dense
+     *   block of length n_dofs. A is symmetric by construction.
      *
      * - <b>Blocked solves</b> (Method::blocked_solves). Z is computed by
      *   blocked multi-right-hand-side solves with one sparse Cholesky
