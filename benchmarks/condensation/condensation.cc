@@ -2,64 +2,44 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 //
-// Benchmark: the cost of the condensation of one elastic body on its
-// candidate contact surface,
+// Benchmark: the two routes of the condensation of a body on its candidate
+// contact surface, A = V_r^T K_r^{-1} V_r (condensation::Method), side by
+// side on the same assembled scene:
 //
-//   Z = K_r^{-1} V (in the full-length form M K_r^{-1} M^T V),  A = V^T Z,
+//   - blocked solves: one sparse Cholesky factorisation with CHOLMOD's
+//     fill-reducing ordering, then Z = K_r^{-1} V_r by blocked forward and
+//     backward solves (n_dofs x columns per pass) and A = V^T Z;
+//   - schur: one factorisation with the surface dofs ordered last, then
+//     A = W^T W, W = L_22^{-1} V_Gamma (L_22 the factor of the Schur
+//     complement on Gamma_c): a dense triangular solve and a rank update of
+//     size n_Gamma x n_c.
 //
-// with V the n_dofs x dim n_elements coupling matrix of the piecewise
-// constant contact tractions. The condensation needs one sparse Cholesky
-// factorisation and one solve per contact unknown; it is cheap only if
-// those solves are done in blocks of right-hand sides (dense BLAS 3 kernels
-// in the supernodal factor) rather than one at a time. Measured, for each
-// body and mesh:
+// For each scene (a .prm file of prm/ with entries overridden, e.g. a finer
+// mesh) the bodies are assembled and the contact surface built once; then,
+// for each body and each route, a child process (fork) runs the Condenser
+// exactly as a contact run does: factorize() (timed: "factor"),
+// assemble_coupling() + condense() (timed: "condense"). The child reports its
+// times and its peak resident memory (getrusage; it includes the assembled
+// scene it inherited, so it is the peak a run with that route would reach up
+// to the end of the condensation), and writes its A to a temporary file, so
+// that the A of the two routes are compared (|dA|, relative to max |A_ij|).
 //
-//   1. t_factor:  SparseCholesky::factorize(K, constraints) alone (the
-//                 extraction of the reduced matrix K_r and CHOLMOD's
-//                 analysis and numerical factorisation);
-//   2. t_blocked: SparseCholesky::solve(MatrixXd) on all columns of V, in
-//                 passes of 256 columns as the Condenser does (each pass is
-//                 handed to CHOLMOD in blocks of block_size() = 64);
-//   3. t_single:  SparseCholesky::solve(VectorXd) on each column of V
-//                 separately (the one-column-at-a-time baseline; on large
-//                 surfaces an evenly spaced sample of columns is solved and
-//                 the time scaled to all columns, flagged in the output);
-//   4. t_condense: the whole condensation through the Condenser's own
-//                 API: assemble_coupling() + factorize() (fictitious
-//                 supports, factorisation, load solve u_o) + condense()
-//                 (blocked solves, A = V^T Z, symmetrisation, G).
+// Times are the minimum over --repeats runs of the factorisation and the
+// condensation in the same child (default 1).
 //
-// and reported: ratio = t_condense / (t_factor + t_blocked), the overhead of
-// the Condenser over the bare linear algebra (target <= ~1.5), and
-// speedup = t_single / t_blocked. The A computed here from the blocked
-// solves and from the one-column solves is compared with the Condenser's,
-// so that the three computations are known to be the same one.
-//
-// Bodies: a 2D receding-block-like rectangle 40 x 40 mm, n x n cells
-// (symmetry on the left, pressures on the top and right, Gamma_c = bottom,
-// 2 edges per contact element), and a 3D box 40 x 20 x 40 mm with
-// 2m x m x 2m cells (symmetry on the left and front, pressure on the top,
-// Gamma_c = bottom y = 0, 8 triangles per contact element). Both are held
-// in all directions but the vertical one, which the Condenser supports by a
-// fictitious support, as in a real contact run.
-//
-// Times of steps 1, 2 and 4 are the minimum over --repeats runs (default
-// 2); step 3 runs once, on at most --single-columns columns (default 128).
-//
-// Usage: condensation_benchmark [--quick | --full] [--csv FILE]
-//                               [--single-columns N] [--repeats N]
+// Usage: condensation_benchmark [--quick | --full] [--prm-dir DIR]
+//                               [--csv FILE] [--repeats N]
 
-#include <dpana/body/body.h>
 #include <dpana/condensation/condenser.h>
-#include <dpana/contact_surface/contact_surface.h>
-#include <dpana/linear_algebra/sparse_cholesky.h>
+#include <dpana/parameters/parameters.h>
+#include <dpana/scene/run.h>
+#include <dpana/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -67,6 +47,10 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace
 {
@@ -80,217 +64,198 @@ namespace
       .count();
   }
 
-  // One line of the results.
+  double
+  peak_memory_mb()
+  {
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0;
+  }
+
+  // A scene of prm/ and the entries that change it: "Body 1/Geometry/Box/
+  // Subdivisions=32, 16, 32" (path of subsections, entry, value).
+  struct Case
+  {
+    std::string              label;
+    std::string              file;
+    std::vector<std::string> entries;
+  };
+
+  // What a child reports of one route.
+  struct Measurement
+  {
+    double       t_factor = 0, t_condense = 0, peak_mb = 0;
+    unsigned int n_gamma = 0;
+  };
+
   struct Row
   {
-    std::string  problem;
-    unsigned int dim = 0;
-    std::string  mesh;
-    unsigned int n_dofs = 0, n_free = 0, n_contact = 0;
-    double       t_setup  = 0; // mesh, dofs, assembly (not compared)
-    double       t_factor = 0, t_blocked = 0, t_single = 0;
-    unsigned int single_columns = 0; // columns actually solved one by one
-    double t_coupling = 0, t_condenser_factorize = 0, t_condenser_condense = 0;
-    double t_condense = 0;
-    double ratio = 0, speedup = 0;
-    // Largest difference between the A of the Condenser and that of the
-    // blocked (resp. one-column) solves, relative to max |A_ij|.
-    double difference_blocked = 0, difference_single = 0;
+    std::string  label;
+    unsigned int body = 0, n_dofs = 0, n_contact = 0;
+    double       setup_mb = 0;
+    Measurement  blocked, schur;
+    double       difference = 0;
   };
 
 
 
-  // @sect3{The bodies}
+  // @sect3{The scene}
   //
-  // The parameter text of the body, in the syntax of a dpana scene file.
-  template <int dim>
+  // The entries as parameter text: "a/b/c=v" becomes subsection a,
+  // subsection b, set c = v, end, end.
   std::string
-  body_parameters(const unsigned int n)
+  entry_text(const std::string &entry)
   {
-    std::ostringstream text;
-    text << "subsection Body 1\n"
-         << "  subsection Geometry\n";
-    if (dim == 2)
-      text << "    set Type = rectangle\n"
-           << "    subsection Rectangle\n"
-           << "      set Lower corner = 0, 0\n"
-           << "      set Upper corner = 40, 40\n"
-           << "      set Subdivisions = " << n << ", " << n << "\n";
-    else
-      text << "    set Type = box\n"
-           << "    subsection Box\n"
-           << "      set Lower corner = 0, 0, 0\n"
-           << "      set Upper corner = 40, 20, 40\n"
-           << "      set Subdivisions = " << 2 * n << ", " << n << ", " << 2 * n
-           << "\n";
-    text << "    end\n"
-         << "  end\n"
-         << "  subsection Material\n"
-         << "    set Young's modulus = 130000\n"
-         << "    set Poisson's ratio = 0.2\n"
-         << "  end\n"
-         << "  subsection Boundary conditions\n"
-         << (dim == 2 ? "    set Symmetry = left\n" :
-                        "    set Symmetry = left, front\n")
-         << "  end\n"
-         << "  subsection Loads\n"
-         << "    set Pressure = top: 50; right: 100\n"
-         << "  end\n"
-         << "end\n";
-    return text.str();
+    const auto  equal = entry.find('=');
+    std::string path  = entry.substr(0, equal);
+    std::string text, ends;
+    for (auto slash = path.find('/'); slash != std::string::npos;
+         slash      = path.find('/'))
+      {
+             text += "subsection " + path.substr(0, slash) + "\n";
+             ends += "end\n";
+             path = path.substr(slash + 1);
+      }
+    return text + "set " + path + " = " + entry.substr(equal + 1) + "\n" + ends;
+  }
+
+  template <int dim>
+  std::unique_ptr<scene::Scene<dim>>
+  make_scene(const std::string              &file,
+             const parameters::FileOutline  &outline,
+             const std::vector<std::string> &entries)
+  {
+    dealii::ParameterHandler prm;
+    scene::declare_parameters(prm, outline);
+    prm.parse_input(file);
+    for (const auto &entry : entries)
+      prm.parse_input_from_string(entry_text(entry));
+    auto s = std::make_unique<scene::Scene<dim>>();
+    s->parse_parameters(prm, outline.n_bodies, outline.has_contact);
+    s->set_quiet(true);
+    return s;
   }
 
 
 
-  // @sect3{One measurement}
+  // @sect3{One route in a child process}
+  //
+  // The child condenses body b by the given method, writes its Measurement
+  // to the pipe and its A (rows, then the column-major values) to
+  // @p a_file, and exits.
   template <int dim>
-  Row
-  run_case(const unsigned int n,
-           const unsigned int max_single_columns,
-           const unsigned int repeats)
+  Measurement
+  measure(scene::Scene<dim>         &s,
+          const unsigned int         b,
+          const condensation::Method method,
+          const unsigned int         repeats,
+          const std::string         &a_file)
   {
-    Row row;
-    row.dim     = dim;
-    row.problem = dim == 2 ? "block2d" : "box3d";
-    row.mesh    = dim == 2 ? std::to_string(n) + "x" + std::to_string(n) :
-                             std::to_string(2 * n) + "x" + std::to_string(n) +
-                            "x" + std::to_string(2 * n);
-
-    // The body: mesh, degrees of freedom, constraints and assembly.
-    auto      start = std::chrono::steady_clock::now();
-    Body<dim> body("Body 1");
-    {
-      dealii::ParameterHandler prm;
-      prm.enter_subsection("Body 1");
-      Body<dim>::declare_parameters(prm);
-      prm.leave_subsection();
-      prm.parse_input_from_string(body_parameters<dim>(n));
-      prm.enter_subsection("Body 1");
-      body.parse_parameters(prm);
-      prm.leave_subsection();
-    }
-    body.create_mesh();
-    body.setup();
-    body.assemble();
-
-    // The candidate contact surface: the whole bottom, normal -y.
-    contact_surface::ContactSurface<dim>                   surface;
-    typename contact_surface::ContactSurface<dim>::Options options;
-    options.boundary     = "bottom";
-    options.boundary_id  = body.boundary_names().at("bottom");
-    options.body         = body.name();
-    options.direction[1] = -1;
-    surface.build(body.triangulation(), options);
-    surface.set_plane_gap(surface.first_contact_point());
-    row.t_setup = seconds_since(start);
-
-    // 4. The condensation through the Condenser, call by call. Every
-    // timing in this function is the minimum over `repeats` runs: the
-    // machine may be shared, and the minimum is the least disturbed run.
-    condensation::Condenser<dim> condenser(body, surface);
-    for (unsigned int k = 0; k < repeats; ++k)
+    int channel[2];
+    AssertThrow(pipe(channel) == 0, dealii::ExcMessage("pipe() failed"));
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    AssertThrow(pid >= 0, dealii::ExcMessage("fork() failed"));
+    if (pid == 0)
       {
-        start = std::chrono::steady_clock::now();
-        condenser.assemble_coupling();
-        const double t_coupling = seconds_since(start);
-        start                   = std::chrono::steady_clock::now();
-        condenser.factorize();
-        const double t_factorize = seconds_since(start);
-        start                    = std::chrono::steady_clock::now();
-        condenser.condense();
-        const double t_condense = seconds_since(start);
-        if (k == 0 || t_coupling + t_factorize + t_condense < row.t_condense)
-          {
-            row.t_coupling            = t_coupling;
-            row.t_condenser_factorize = t_factorize;
-            row.t_condenser_condense  = t_condense;
-            row.t_condense            = t_coupling + t_factorize + t_condense;
-          }
-      }
-
-    const Eigen::SparseMatrix<double> &V  = condenser.coupling();
-    const Eigen::MatrixXd             &A  = condenser.compliance();
-    const unsigned int                 nc = V.cols();
-    row.n_dofs                            = body.dof_handler().n_dofs();
-    row.n_contact                         = nc;
-
-    // 1. The bare factorisation, of the same reduced matrix: the body's
-    // constraints plus the Condenser's fictitious supports.
-    dealii::AffineConstraints<double> constraints;
-    for (const auto &line : body.constraints().get_lines())
-      {
-        constraints.add_line(line.index);
-        constraints.add_entries(line.index, line.entries);
-        constraints.set_inhomogeneity(line.index, line.inhomogeneity);
-      }
-    for (const unsigned int s : condenser.fictitious_supports())
-      constraints.add_line(s);
-    constraints.close();
-
-    linear_algebra::SparseCholesky cholesky;
-    for (unsigned int k = 0; k < repeats; ++k)
-      {
-        start = std::chrono::steady_clock::now();
-        cholesky.factorize(body.system_matrix(), constraints);
-        const double t = seconds_since(start);
-        row.t_factor   = k == 0 ? t : std::min(row.t_factor, t);
-      }
-    row.n_free = cholesky.n_unknowns();
-
-    // 2. Blocked solves, in passes of 256 columns of V (the Condenser's
-    // default). Only the solve is timed; A = V^T Z is formed untimed for
-    // the comparison.
-    const double       A_scale = std::max(A.cwiseAbs().maxCoeff(), 1e-300);
-    Eigen::MatrixXd    A_blocked(nc, nc);
-    const unsigned int pass = 256;
-    for (unsigned int c0 = 0; c0 < nc; c0 += pass)
-      {
-        const unsigned int    nb = std::min(pass, nc - c0);
-        const Eigen::MatrixXd Vb = Eigen::MatrixXd(V.middleCols(c0, nb));
-        Eigen::MatrixXd       Zb;
-        double                t_pass = 0;
+        close(channel[0]);
+        condensation::Parameters parameters;
+        parameters.method = method;
+        Measurement m;
         for (unsigned int k = 0; k < repeats; ++k)
           {
-            start          = std::chrono::steady_clock::now();
-            Zb             = cholesky.solve(Vb);
-            const double t = seconds_since(start);
-            t_pass         = k == 0 ? t : std::min(t_pass, t);
+            condensation::Condenser<dim> c(s.body(b), s.surface(b), parameters);
+            auto start = std::chrono::steady_clock::now();
+            c.factorize();
+            const double t_factor = seconds_since(start);
+            start                 = std::chrono::steady_clock::now();
+            c.assemble_coupling();
+            c.condense(parameters.columns_per_solve);
+            const double t_condense = seconds_since(start);
+            if (k == 0 || t_factor + t_condense < m.t_factor + m.t_condense)
+              {
+                m.t_factor   = t_factor;
+                m.t_condense = t_condense;
+              }
+            m.n_gamma = c.factorization().schur_dofs().size();
+            if (k + 1 == repeats)
+              {
+                const Eigen::MatrixXd &A = c.compliance();
+                std::ofstream          out(a_file, std::ios::binary);
+                const Eigen::Index     n = A.rows();
+                out.write(reinterpret_cast<const char *>(&n), sizeof(n));
+                out.write(reinterpret_cast<const char *>(A.data()),
+                          sizeof(double) * n * n);
+              }
           }
-        row.t_blocked += t_pass;
-        A_blocked.middleCols(c0, nb) = V.transpose() * Zb;
+        m.peak_mb = peak_memory_mb();
+        const bool ok =
+          write(channel[1], &m, sizeof(m)) == static_cast<long>(sizeof(m));
+        close(channel[1]);
+        _exit(ok ? 0 : 1);
       }
-    row.difference_blocked = (A_blocked - A).cwiseAbs().maxCoeff() / A_scale;
+    close(channel[1]);
+    Measurement m;
+    const long  got    = read(channel[0], &m, sizeof(m));
+    int         status = 0;
+    waitpid(pid, &status, 0);
+    close(channel[0]);
+    AssertThrow(got == static_cast<long>(sizeof(m)) && WIFEXITED(status) &&
+                  WEXITSTATUS(status) == 0,
+                dealii::ExcMessage("the condensation of body " +
+                                   std::to_string(b + 1) + " failed"));
+    return m;
+  }
 
-    // 3. One column at a time: all columns, or an evenly spaced sample of
-    // max_single_columns of them, the time then scaled by nc / sample
-    // (every column costs the same two triangular sweeps). Run once: this
-    // is the slow baseline, and its noise is small against the speed-up.
-    std::vector<unsigned int> columns;
-    if (nc <= max_single_columns)
-      for (unsigned int j = 0; j < nc; ++j)
-        columns.push_back(j);
-    else
-      for (unsigned int k = 0; k < max_single_columns; ++k)
-        columns.push_back(static_cast<unsigned int>(
-          (static_cast<unsigned long>(k) * nc) / max_single_columns));
-    double t_sample = 0;
-    for (const unsigned int j : columns)
+  Eigen::MatrixXd
+  read_matrix(const std::string &file)
+  {
+    std::ifstream in(file, std::ios::binary);
+    Eigen::Index  n = 0;
+    in.read(reinterpret_cast<char *>(&n), sizeof(n));
+    Eigen::MatrixXd A(n, n);
+    in.read(reinterpret_cast<char *>(A.data()), sizeof(double) * n * n);
+    std::remove(file.c_str());
+    return A;
+  }
+
+
+
+  // @sect3{One scene}
+  template <int dim>
+  std::vector<Row>
+  run_case(const Case                    &c,
+           const parameters::FileOutline &outline,
+           const unsigned int             repeats)
+  {
+    auto s = make_scene<dim>(c.file, outline, c.entries);
+    s->assemble();
+    s->build_contact_surface();
+    std::vector<Row> rows;
+    for (unsigned int b = 0; b < s->n_bodies(); ++b)
       {
-        const Eigen::VectorXd b = Eigen::VectorXd(V.col(j));
-        start                   = std::chrono::steady_clock::now();
-        const Eigen::VectorXd z = cholesky.solve(b);
-        t_sample += seconds_since(start);
-        const Eigen::VectorXd a = V.transpose() * z;
-        row.difference_single =
-          std::max(row.difference_single,
-                   (a - A.col(j)).cwiseAbs().maxCoeff() / A_scale);
+        Row row;
+        row.label    = c.label;
+        row.body     = b + 1;
+        row.n_dofs   = s->body(b).dof_handler().n_dofs();
+        row.setup_mb = peak_memory_mb();
+        const std::string file =
+          "/tmp/condensation_benchmark_" + std::to_string(getpid());
+        row.blocked = measure(*s,
+                              b,
+                              condensation::Method::blocked_solves,
+                              repeats,
+                              file + "_blocked");
+        row.schur =
+          measure(*s, b, condensation::Method::schur, repeats, file + "_schur");
+        const Eigen::MatrixXd A_blocked = read_matrix(file + "_blocked");
+        const Eigen::MatrixXd A_schur   = read_matrix(file + "_schur");
+        row.n_contact                   = A_schur.rows();
+        row.difference = (A_schur - A_blocked).cwiseAbs().maxCoeff() /
+                         std::max(A_blocked.cwiseAbs().maxCoeff(), 1e-300);
+        rows.push_back(row);
       }
-    row.single_columns = columns.size();
-    row.t_single       = t_sample * nc / columns.size();
-
-    row.ratio   = row.t_condense / (row.t_factor + row.t_blocked);
-    row.speedup = row.t_single / row.t_blocked;
-    return row;
+    return rows;
   }
 
 
@@ -299,44 +264,54 @@ namespace
   void
   print_header()
   {
-    std::printf("%-8s %-10s %8s %6s %9s %9s %9s %9s %9s %6s %7s %8s\n",
-                "problem",
-                "mesh",
+    std::printf("%-26s %4s %8s %5s %6s %7s | %8s %8s %6s %7s | %8s %8s %6s "
+                "%7s | %7s\n",
+                "scene",
+                "body",
                 "n_dofs",
                 "n_c",
-                "setup[s]",
-                "factor[s]",
-                "blocked",
-                "single",
+                "n_G",
+                "setupMB",
+                "factor",
                 "condense",
                 "ratio",
-                "speedup",
+                "peakMB",
+                "factor",
+                "condense",
+                "ratio",
+                "peakMB",
                 "|dA|");
+    std::printf("%-26s %4s %8s %5s %6s %7s | %-33s | %-33s |\n",
+                "",
+                "",
+                "",
+                "",
+                "",
+                "",
+                "blocked solves [s]",
+                "schur [s]");
   }
 
   void
   print_row(const Row &r)
   {
-    char single[32];
-    std::snprintf(single,
-                  sizeof(single),
-                  "%.3g%s",
-                  r.t_single,
-                  r.single_columns < r.n_contact ? "*" : "");
-    std::printf(
-      "%-8s %-10s %8u %6u %9.3g %9.3g %9.3g %9s %9.3g %6.2f %7.1f %8.1e\n",
-      r.problem.c_str(),
-      r.mesh.c_str(),
-      r.n_dofs,
-      r.n_contact,
-      r.t_setup,
-      r.t_factor,
-      r.t_blocked,
-      single,
-      r.t_condense,
-      r.ratio,
-      r.speedup,
-      std::max(r.difference_blocked, r.difference_single));
+    std::printf("%-26s %4u %8u %5u %6u %7.0f | %8.3g %8.3g %6.2f %7.0f | "
+                "%8.3g %8.3g %6.2f %7.0f | %7.1e\n",
+                r.label.c_str(),
+                r.body,
+                r.n_dofs,
+                r.n_contact,
+                r.schur.n_gamma,
+                r.setup_mb,
+                r.blocked.t_factor,
+                r.blocked.t_condense,
+                r.blocked.t_condense / r.blocked.t_factor,
+                r.blocked.peak_mb,
+                r.schur.t_factor,
+                r.schur.t_condense,
+                r.schur.t_condense / r.schur.t_factor,
+                r.schur.peak_mb,
+                r.difference);
     std::fflush(stdout);
   }
 
@@ -350,19 +325,51 @@ namespace
                   << file << std::endl;
         std::exit(1);
       }
-    out << "problem,dim,mesh,n_dofs,n_free,n_contact,t_setup,t_factor,"
-           "t_blocked,t_single,single_columns,t_coupling,"
-           "t_condenser_factorize,t_condenser_condense,t_condense,ratio,"
-           "speedup,difference_blocked,difference_single\n";
+    out << "scene,body,n_dofs,n_contact,n_gamma,setup_mb,"
+           "blocked_factor,blocked_condense,blocked_peak_mb,"
+           "schur_factor,schur_condense,schur_peak_mb,difference\n";
     out.precision(6);
     for (const Row &r : rows)
-      out << r.problem << ',' << r.dim << ',' << r.mesh << ',' << r.n_dofs
-          << ',' << r.n_free << ',' << r.n_contact << ',' << r.t_setup << ','
-          << r.t_factor << ',' << r.t_blocked << ',' << r.t_single << ','
-          << r.single_columns << ',' << r.t_coupling << ','
-          << r.t_condenser_factorize << ',' << r.t_condenser_condense << ','
-          << r.t_condense << ',' << r.ratio << ',' << r.speedup << ','
-          << r.difference_blocked << ',' << r.difference_single << '\n';
+      out << r.label << ',' << r.body << ',' << r.n_dofs << ',' << r.n_contact
+          << ',' << r.schur.n_gamma << ',' << r.setup_mb << ','
+          << r.blocked.t_factor << ',' << r.blocked.t_condense << ','
+          << r.blocked.peak_mb << ',' << r.schur.t_factor << ','
+          << r.schur.t_condense << ',' << r.schur.peak_mb << ',' << r.difference
+          << '\n';
+  }
+
+
+
+  // @sect3{The cases}
+  //
+  // The 3D receding block (receding_3d_L80.prm) at Subdivisions 2m, m, 2m
+  // and the 2D Hertz cylinder on a rigid plane (hertz_rigid_mu0.prm) with k
+  // contact refinements.
+  std::vector<Case>
+  cases(const std::string &mode, const std::string &prm_dir)
+  {
+    std::vector<unsigned int> boxes = {16, 24}, hertz = {6, 7};
+    if (mode == "quick")
+      boxes = {8}, hertz = {5};
+    else if (mode == "full")
+      boxes = {16, 24}, hertz = {6, 7, 8};
+    std::vector<Case> result;
+    for (const unsigned int m : boxes)
+      {
+        const std::string sub = std::to_string(2 * m) + ", " +
+                                std::to_string(m) + ", " +
+                                std::to_string(2 * m);
+        result.push_back({"receding_3d_L80 " + std::to_string(2 * m) + "x" +
+                            std::to_string(m) + "x" + std::to_string(2 * m),
+                          prm_dir + "/receding_3d_L80.prm",
+                          {"Body 1/Geometry/Box/Subdivisions=" + sub}});
+      }
+    for (const unsigned int k : hertz)
+      result.push_back({"hertz_rigid_mu0 ref " + std::to_string(k),
+                        prm_dir + "/hertz_rigid_mu0.prm",
+                        {"Body 1/Geometry/Quarter disc/Contact refinements=" +
+                         std::to_string(k)}});
+    return result;
   }
 } // namespace
 
@@ -373,10 +380,10 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  std::string  mode               = "default";
-  std::string  csv                = "results.csv";
-  unsigned int max_single_columns = 128;
-  unsigned int repeats            = 2;
+  std::string  mode    = "default";
+  std::string  csv     = "results.csv";
+  std::string  prm_dir = "prm";
+  unsigned int repeats = 1;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -384,68 +391,44 @@ main(int argc, char **argv)
         mode = arg.substr(2);
       else if (arg == "--csv" && i + 1 < argc)
         csv = argv[++i];
-      else if ((arg == "--single-columns" || arg == "--repeats") &&
-               i + 1 < argc)
-        {
-          const int value = std::atoi(argv[++i]);
-          if (value <= 0)
-            {
-              std::cerr << "condensation_benchmark: error: " << arg
-                        << " must be a positive integer" << std::endl;
-              return 1;
-            }
-          (arg == "--repeats" ? repeats : max_single_columns) = value;
-        }
+      else if (arg == "--prm-dir" && i + 1 < argc)
+        prm_dir = argv[++i];
+      else if (arg == "--repeats" && i + 1 < argc && std::atoi(argv[i + 1]) > 0)
+        repeats = std::atoi(argv[++i]);
       else
         {
-          std::cerr << "condensation_benchmark: error: unknown argument '"
-                    << arg
+          std::cerr << "condensation_benchmark: error: bad argument '" << arg
                     << "' (usage: condensation_benchmark [--quick | --full] "
-                       "[--csv FILE] [--single-columns N] [--repeats N])"
+                       "[--prm-dir DIR] [--csv FILE] [--repeats N])"
                     << std::endl;
           return 1;
         }
     }
 
-  // Sizes: n x n cells in 2D, 2m x m x 2m in 3D.
-  std::vector<unsigned int> sizes_2d = {32, 64, 128, 256};
-  std::vector<unsigned int> sizes_3d = {4, 8, 12, 16};
-  if (mode == "quick")
-    {
-      sizes_2d = {16, 32};
-      sizes_3d = {2, 4};
-    }
-  else if (mode == "full")
-    {
-      sizes_2d = {64, 128, 256, 512};
-      sizes_3d = {8, 12, 16, 20};
-    }
-
   try
     {
-      // Warm-up (untimed): the first CHOLMOD and BLAS calls of a process
-      // pay for their initialisation.
-      run_case<2>(16, 4, 1);
-
       std::vector<Row> rows;
       const auto       start = std::chrono::steady_clock::now();
-      std::printf("Condensation of one body (times in seconds; single* = "
-                  "sampled columns, scaled to all)\n");
+      std::printf("Condensation by blocked solves and through the Schur "
+                  "complement, side by side (times in s, memory in MB)\n");
       print_header();
-      for (const unsigned int n : sizes_2d)
+      for (const Case &c : cases(mode, prm_dir))
         {
-          rows.push_back(run_case<2>(n, max_single_columns, repeats));
-          print_row(rows.back());
-        }
-      for (const unsigned int n : sizes_3d)
-        {
-          rows.push_back(run_case<3>(n, max_single_columns, repeats));
-          print_row(rows.back());
+          const auto outline = parameters::scan_file(c.file);
+          const auto part    = outline.dimension == 2 ?
+                                 run_case<2>(c, outline, repeats) :
+                                 run_case<3>(c, outline, repeats);
+          for (const Row &r : part)
+            {
+              print_row(r);
+              rows.push_back(r);
+            }
         }
       write_csv(csv, rows);
-      std::printf("ratio = condense / (factor + blocked), speedup = single / "
-                  "blocked; |dA| = max difference of A (blocked and single "
-                  "solves vs the Condenser), relative to max |A_ij|\n"
+      std::printf("ratio = condense / factor of the same route; peakMB = peak "
+                  "resident memory of the process that assembled the scene "
+                  "and ran the route (setupMB: before the routes); |dA| = max "
+                  "|A_schur - A_blocked| / max |A_ij|\n"
                   "total wall time %.1f s; csv: %s\n",
                   seconds_since(start),
                   csv.c_str());

@@ -2,11 +2,11 @@
 # Builds the condensation benchmark (Release, target condensation_benchmark,
 # in build/ of the repository or $DPANA_BUILD_DIR), runs it and plots the
 # result.
-#   ./benchmarks/condensation/run.sh                 default sizes (< 3 min)
-#   ./benchmarks/condensation/run.sh --quick         a few seconds
-#   ./benchmarks/condensation/run.sh --full          larger meshes (minutes)
+#   ./benchmarks/condensation/run.sh                 default sizes (minutes)
+#   ./benchmarks/condensation/run.sh --quick         small scenes (seconds)
+#   ./benchmarks/condensation/run.sh --full          up to 1.1 M dofs
 #   ./benchmarks/condensation/run.sh --out DIR ...   results into DIR
-# Other arguments are passed to the executable (e.g. --single-columns N).
+# Other arguments are passed to the executable (e.g. --repeats N).
 # Output: results.csv, results.txt and condensation.png in
 # benchmarks/condensation/results/ (or DIR), printed at the end.
 set -euo pipefail
@@ -37,7 +37,8 @@ cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "${DPANA_JOBS:-2}" --target condensation_benchmark
 
 mkdir -p "$out"
-"$build/benchmarks/condensation_benchmark" --csv "$out/results.csv" \
+"$build/benchmarks/condensation_benchmark" --prm-dir "$top/prm" \
+  --csv "$out/results.csv" \
   ${args[@]+"${args[@]}"} | tee "$out/results.txt"
 
 # matplotlib comes from Debian (python3-matplotlib): use the system

@@ -15,9 +15,11 @@ namespace dpana
     template <int dim>
     Condenser<dim>::Condenser(
       const Body<dim>                            &body,
-      const contact_surface::ContactSurface<dim> &surface)
+      const contact_surface::ContactSurface<dim> &surface,
+      const Parameters                           &parameters)
       : body(body)
       , surface(surface)
+      , parameters(parameters)
     {
     }
 
@@ -128,7 +130,16 @@ namespace dpana
 
       try
         {
-          cholesky.factorize(body.system_matrix(), constraints);
+          if (parameters.method == Method::schur)
+            {
+              if (V.rows() == 0)
+                assemble_coupling();
+              cholesky.factorize_with_last(body.system_matrix(),
+                                           constraints,
+                                           surface_dofs());
+            }
+          else
+            cholesky.factorize(body.system_matrix(), constraints);
         }
       catch (const linear_algebra::NotPositiveDefiniteError &)
         {
@@ -156,12 +167,79 @@ namespace dpana
 
 
 
-    // @sect3{Condensation by blocked solves}
+    template <int dim>
+    std::vector<unsigned int>
+    Condenser<dim>::surface_dofs() const
+    {
+      std::vector<bool> on_surface(V.rows(), false);
+      for (Eigen::Index c = 0; c < V.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(V, c); it; ++it)
+          on_surface[it.row()] = true;
+      std::vector<unsigned int> dofs;
+      for (unsigned int i = 0; i < on_surface.size(); ++i)
+        if (on_surface[i])
+          dofs.push_back(i);
+      return dofs;
+    }
+
+
+
     template <int dim>
     void
     Condenser<dim>::condense(const unsigned int columns_per_pass)
     {
       Assert(cholesky.is_factorized(), dealii::ExcInternalError());
+      if (parameters.method == Method::schur)
+        condense_through_schur_complement();
+      else
+        condense_by_blocked_solves(columns_per_pass);
+      s_o = V.transpose() * u_o;
+      G   = R.transpose() * V;
+    }
+
+
+
+    // @sect3{Condensation through the Schur complement}
+    //
+    // V_Gamma = M^T V on the unknowns of the last block, in the order of the
+    // factor: a row of a constrained dof is folded into its masters (none
+    // for a support), then W_Gamma = L_22^{-1} V_Gamma in place (TRSM) and
+    // the lower triangle of A = W^T W by a symmetric rank update (SYRK).
+    template <int dim>
+    void
+    Condenser<dim>::condense_through_schur_complement()
+    {
+      const auto &dofs = cholesky.schur_dofs();
+      A.setZero(V.cols(), V.cols());
+      relative_asymmetry = 0.0;
+      if (dofs.empty())
+        return;
+      std::vector<int> position(V.rows(), -1);
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        position[dofs[k]] = k;
+      Eigen::MatrixXd W = Eigen::MatrixXd::Zero(dofs.size(), V.cols());
+      for (Eigen::Index c = 0; c < V.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(V, c); it; ++it)
+          if (!constraints.is_constrained(it.row()))
+            W(position[it.row()], c) += it.value();
+          else
+            for (const auto &[j, a] :
+                 *constraints.get_constraint_entries(it.row()))
+              W(position[j], c) += a * it.value();
+
+      cholesky.solve_schur_factor(W);
+      A.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
+      A = A.selfadjointView<Eigen::Lower>();
+    }
+
+
+
+    // @sect3{Condensation by blocked solves}
+    template <int dim>
+    void
+    Condenser<dim>::condense_by_blocked_solves(
+      const unsigned int columns_per_pass)
+    {
       const unsigned int nc = V.cols();
       A.setZero(nc, nc);
       for (unsigned int c0 = 0; c0 < nc; c0 += columns_per_pass)
@@ -174,8 +252,6 @@ namespace dpana
       const double norm  = A.norm();
       relative_asymmetry = norm > 0 ? (A - A.transpose()).norm() / norm : 0.0;
       A                  = 0.5 * (A + A.transpose()).eval();
-      s_o                = V.transpose() * u_o;
-      G                  = R.transpose() * V;
     }
 
 

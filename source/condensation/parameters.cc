@@ -12,11 +12,20 @@ namespace dpana
     void
     Parameters::declare_parameters(dealii::ParameterHandler &prm)
     {
+      prm.declare_entry("Condensation method",
+                        "schur",
+                        dealii::Patterns::Selection("schur|blocked solves"),
+                        "How A = V^T K^-1 V is formed: 'schur' through the "
+                        "Cholesky factor of the Schur complement of K on the "
+                        "contact surface (the surface dofs ordered last in "
+                        "the factorisation), 'blocked solves' by solving for "
+                        "the columns of V.");
       prm.declare_entry("Columns per solve",
                         "256",
                         dealii::Patterns::Integer(1),
                         "Columns of V handed at once to the blocked sparse "
-                        "Cholesky solves of the condensation.");
+                        "Cholesky solves of the condensation (Condensation "
+                        "method = blocked solves).");
     }
 
 
@@ -24,6 +33,9 @@ namespace dpana
     void
     Parameters::parse_parameters(dealii::ParameterHandler &prm)
     {
+      method            = prm.get("Condensation method") == "schur" ?
+                            Method::schur :
+                            Method::blocked_solves;
       columns_per_solve = prm.get_integer("Columns per solve");
     }
   } // namespace condensation

@@ -30,6 +30,50 @@ namespace dpana
                    static_cast<long>(this->m_cholmodFactor->minor) :
                    -1;
         }
+
+        // The symbolic analysis with the given fill-reducing permutation
+        // (factor column k is unknown perm[k]) and without the postordering
+        // of the elimination tree, which could move columns of the last
+        // block forward.
+        void
+        analyze_given(const Eigen::SparseMatrix<double> &K_lower,
+                      std::vector<int>                  &perm)
+        {
+          if (this->m_cholmodFactor)
+            cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
+          cholmod_sparse A = Eigen::viewAsCholmod(
+            K_lower.template selfadjointView<Eigen::Lower>());
+          cholmod_common &c         = this->cholmod();
+          const int       nmethods  = c.nmethods;
+          const int       ordering  = c.method[0].ordering;
+          const int       postorder = c.postorder;
+          c.nmethods                = 1;
+          c.method[0].ordering      = CHOLMOD_GIVEN;
+          c.postorder               = 0;
+          this->m_cholmodFactor =
+            cholmod_analyze_p(&A, perm.data(), nullptr, 0, &c);
+          c.nmethods                = nmethods;
+          c.method[0].ordering      = ordering;
+          c.postorder               = postorder;
+          this->m_isInitialized     = true;
+          this->m_info              = Eigen::Success;
+          this->m_analysisIsOk      = this->m_cholmodFactor != nullptr;
+          this->m_factorizationIsOk = false;
+        }
+
+        // The fill-reducing permutation chosen by the last analysis.
+        std::vector<int>
+        permutation() const
+        {
+          const int *p = static_cast<const int *>(this->m_cholmodFactor->Perm);
+          return std::vector<int>(p, p + this->m_cholmodFactor->n);
+        }
+
+        const cholmod_factor &
+        factor() const
+        {
+          return *this->m_cholmodFactor;
+        }
       };
     } // namespace
 
@@ -70,6 +114,7 @@ namespace dpana
       for (unsigned int i = 0; i < n_rows; ++i)
         reduced_index[i] = i;
       lines.clear();
+      last.clear();
 
       std::vector<Eigen::Triplet<double>> triplets;
       triplets.reserve(K.n_nonzero_elements() / 2 + n_rows);
@@ -93,6 +138,7 @@ namespace dpana
       for (unsigned int i = 0; i < n_rows; ++i)
         free[i] = reduced_index[i] = i;
       lines.clear();
+      last.clear();
       Eigen::SparseMatrix<double> K_lower = K.triangularView<Eigen::Lower>();
       factorize_lower(K_lower);
     }
@@ -103,6 +149,16 @@ namespace dpana
     SparseCholesky::factorize(
       const dealii::SparseMatrix<double>      &K,
       const dealii::AffineConstraints<double> &constraints)
+    {
+      last.clear();
+      factorize_lower(reduce(K, constraints));
+    }
+
+
+
+    Eigen::SparseMatrix<double>
+    SparseCholesky::reduce(const dealii::SparseMatrix<double>      &K,
+                           const dealii::AffineConstraints<double> &constraints)
     {
       AssertThrow(K.m() == K.n(), dealii::ExcNotQuadratic());
       AssertThrow(constraints.is_closed(),
@@ -151,7 +207,7 @@ namespace dpana
         }
       Eigen::SparseMatrix<double> K_lower(n_free, n_free);
       K_lower.setFromTriplets(triplets.begin(), triplets.end());
-      factorize_lower(K_lower);
+      return K_lower;
     }
 
 
@@ -168,6 +224,9 @@ namespace dpana
       AssertThrow(impl->llt.info() == Eigen::Success,
                   dealii::ExcMessage(
                     "SparseCholesky: CHOLMOD's symbolic analysis failed."));
+      schur.clear();
+      if (!last.empty())
+        order_last(K_lower);
       impl->llt.factorize(K_lower);
       if (impl->llt.info() != Eigen::Success)
         {
@@ -182,6 +241,163 @@ namespace dpana
           throw NotPositiveDefiniteError(message.str());
         }
       impl->factorized = true;
+    }
+
+
+
+    // @sect3{The surface unknowns last}
+    //
+    // The free degrees of freedom a surface dof stands for: itself if it is
+    // free, its masters if it is constrained (a support or a Dirichlet
+    // condition without masters stands for none).
+    void
+    SparseCholesky::factorize_with_last(
+      const dealii::SparseMatrix<double>      &K,
+      const dealii::AffineConstraints<double> &constraints,
+      const std::vector<unsigned int>         &last_dofs)
+    {
+      const Eigen::SparseMatrix<double> K_lower = reduce(K, constraints);
+      std::vector<bool>                 is_last(free.size(), false);
+      for (const unsigned int i : last_dofs)
+        {
+          AssertIndexRange(i, n_rows);
+          if (reduced_index[i] >= 0)
+            is_last[reduced_index[i]] = true;
+          else
+            for (const auto &[j, a] : *constraints.get_constraint_entries(i))
+              is_last[reduced_index[j]] = true;
+        }
+      last.clear();
+      for (unsigned int k = 0; k < free.size(); ++k)
+        if (is_last[k])
+          last.push_back(k);
+      factorize_lower(K_lower);
+    }
+
+
+
+    // CHOLMOD's own fill-reducing ordering of the whole reduced matrix (the
+    // analysis just done), with the unknowns of the last block moved to the
+    // end in the order CHOLMOD gave them (a stable partition), is handed back
+    // to CHOLMOD as the given ordering.
+    void
+    SparseCholesky::order_last(const Eigen::SparseMatrix<double> &K_lower)
+    {
+      const std::vector<int> perm = impl->llt.permutation();
+      std::vector<bool>      is_last(perm.size(), false);
+      for (const unsigned int k : last)
+        is_last[k] = true;
+      std::vector<int> given;
+      given.reserve(perm.size());
+      for (const int k : perm)
+        if (!is_last[k])
+          given.push_back(k);
+      for (const int k : perm)
+        if (is_last[k])
+          given.push_back(k);
+      impl->llt.analyze_given(K_lower, given);
+      AssertThrow(impl->llt.info() == Eigen::Success &&
+                    impl->llt.permutation() == given,
+                  dealii::ExcMessage("SparseCholesky: CHOLMOD's analysis "
+                                     "with the given ordering failed."));
+      schur.resize(last.size());
+      for (unsigned int k = 0; k < last.size(); ++k)
+        schur[k] = free[given[given.size() - last.size() + k]];
+    }
+
+
+
+    // The columns n0 = n - n_last .. n - 1 of the supernodal factor: each
+    // supernode s holds the columns super[s] .. super[s+1]-1 as a dense
+    // column-major block of nsrow = pi[s+1] - pi[s] rows, whose row indices
+    // are s[pi[s] ..] (the supernode's own columns first). Every row of a
+    // column j >= n0 is >= j, hence in the last block.
+    Eigen::MatrixXd
+    SparseCholesky::schur_factor() const
+    {
+      AssertThrow(impl->factorized && !last.empty(),
+                  dealii::ExcMessage(
+                    "SparseCholesky: factorize_with_last() first."));
+      const cholmod_factor &L = impl->llt.factor();
+      AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
+      const int     n     = L.n;
+      const int     n0    = n - last.size();
+      const int    *super = static_cast<const int *>(L.super);
+      const int    *pi    = static_cast<const int *>(L.pi);
+      const int    *px    = static_cast<const int *>(L.px);
+      const int    *rows  = static_cast<const int *>(L.s);
+      const double *x     = static_cast<const double *>(L.x);
+
+      Eigen::MatrixXd L22 = Eigen::MatrixXd::Zero(last.size(), last.size());
+      for (std::size_t s = 0; s < L.nsuper; ++s)
+        {
+          if (super[s + 1] <= n0)
+            continue;
+          const int nsrow = pi[s + 1] - pi[s];
+          for (int j = std::max(super[s], n0); j < super[s + 1]; ++j)
+            {
+              const double *column = x + px[s] + (j - super[s]) * nsrow;
+              for (int k = j - super[s]; k < nsrow; ++k)
+                L22(rows[pi[s] + k] - n0, j - n0) = column[k];
+            }
+        }
+      return L22;
+    }
+
+
+
+    // The forward substitution with L_22, supernode by supernode of the
+    // last block and in place: the rows of W of the supernode's columns are
+    // solved with its dense diagonal block (TRSM), then the product of its
+    // block below the diagonal with them (GEMM) is subtracted from the rows
+    // of W its row indices name. The columns of a supernode that straddles
+    // the start n0 of the block and lie before it are skipped: W vanishes
+    // on their rows.
+    void
+    SparseCholesky::solve_schur_factor(Eigen::MatrixXd &W) const
+    {
+      AssertThrow(impl->factorized && !last.empty(),
+                  dealii::ExcMessage(
+                    "SparseCholesky: factorize_with_last() first."));
+      AssertDimension(W.rows(), last.size());
+      const cholmod_factor &L = impl->llt.factor();
+      AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
+      const int     n0    = L.n - last.size();
+      const int    *super = static_cast<const int *>(L.super);
+      const int    *pi    = static_cast<const int *>(L.pi);
+      const int    *px    = static_cast<const int *>(L.px);
+      const int    *rows  = static_cast<const int *>(L.s);
+      const double *x     = static_cast<const double *>(L.x);
+      using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+      for (std::size_t s = 0; s < L.nsuper; ++s)
+        {
+          if (super[s + 1] <= n0)
+            continue;
+          const int   nscol = super[s + 1] - super[s];
+          const int   nsrow = pi[s + 1] - pi[s];
+          const int   first = std::max(super[s], n0);
+          const int   k0    = first - super[s];
+          const int   ncols = super[s + 1] - first;
+          const Block S(x + px[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
+          auto        Wd = W.middleRows(first - n0, ncols);
+          S.block(k0, k0, ncols, ncols)
+            .triangularView<Eigen::Lower>()
+            .solveInPlace(Wd);
+          if (nsrow == nscol)
+            continue;
+          const Eigen::MatrixXd update =
+            S.block(nscol, k0, nsrow - nscol, ncols) * Wd;
+          for (int k = 0; k < nsrow - nscol; ++k)
+            W.row(rows[pi[s] + nscol + k] - n0) -= update.row(k);
+        }
+    }
+
+
+
+    const std::vector<unsigned int> &
+    SparseCholesky::schur_dofs() const
+    {
+      return schur;
     }
 
 

@@ -226,9 +226,8 @@ namespace dpana
       condensers.clear();
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          condensers.push_back(
-            std::make_unique<condensation::Condenser<dim>>(*bodies[b],
-                                                           *surfaces[b]));
+          condensers.push_back(std::make_unique<condensation::Condenser<dim>>(
+            *bodies[b], *surfaces[b], condensation_parameters));
           {
             const auto phase =
               phase_log.phase("factorization",

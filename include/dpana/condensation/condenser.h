@@ -5,6 +5,7 @@
 #define dpana_condensation_condenser_h
 
 #include <dpana/body/body.h>
+#include <dpana/condensation/parameters.h>
 #include <dpana/contact_surface/contact_surface.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
@@ -49,12 +50,31 @@ namespace dpana
      * @f[
      *   V^T u = A r + s_o, \qquad A = V^T Z, \quad s_o = V^T u_o .
      * @f]
-     * Z is computed by blocked multi-right-hand-side solves with one sparse
-     * Cholesky factorisation; A = V^T Z is symmetric in exact arithmetic
-     * (V^T M K_r^{-1} M^T V), and it is symmetrised, 1/2 (A + A^T), after the
-     * relative asymmetry ||A - A^T||_F / ||A||_F is recorded. A is positive
-     * definite when the columns of M^T V are independent, which the grouping
-     * of faces into contact elements (LBB) ensures.
+     * A is positive definite when the columns of V_r = M^T V are
+     * independent, which the grouping of faces into contact elements (LBB)
+     * ensures. It is formed in one of two ways (Parameters::method):
+     *
+     * - <b>Schur complement</b> (Method::schur). V_r vanishes outside the
+     *   n_Gamma unknowns of the dofs on the contact surface Gamma_c. With
+     *   these ordered last in the factorisation, K_r = P^T L L^T P with
+     *   P = [fill-reducing ordering of the other unknowns, then Gamma_c],
+     *   W = L^{-1} P V_r vanishes outside the last block, where it is
+     *   W_Gamma = L_22^{-1} V_Gamma, L_22 the last diagonal block of L (the
+     *   Cholesky factor of the Schur complement of K_r on Gamma_c). Hence
+     * @f[
+     *   A = W_\Gamma^T W_\Gamma ,
+     * @f]
+     *   one triangular solve with L_22, on the dense supernodes of the
+     *   factor itself (SparseCholesky::solve_schur_factor()), and one
+     *   symmetric rank update, dense work of size n_Gamma x n_c after the
+     *   one factorisation (SparseCholesky::factorize_with_last()); no dense
+     *   block of length n_dofs. A is symmetric by construction.
+     *
+     * - <b>Blocked solves</b> (Method::blocked_solves). Z is computed by
+     *   blocked multi-right-hand-side solves with one sparse Cholesky
+     *   factorisation and A = V^T Z, symmetric in exact arithmetic
+     *   (V^T M K_r^{-1} M^T V); it is symmetrised, 1/2 (A + A^T), after the
+     *   relative asymmetry ||A - A^T||_F / ||A||_F is recorded.
      *
      * <h3>Floating bodies</h3>
      *
@@ -83,10 +103,12 @@ namespace dpana
     {
     public:
       Condenser(const Body<dim>                            &body,
-                const contact_surface::ContactSurface<dim> &surface);
+                const contact_surface::ContactSurface<dim> &surface,
+                const Parameters &parameters = Parameters());
 
       /**
-       * Assemble V (sparse, n_dofs x dim n_elements).
+       * Assemble V (sparse, n_dofs x dim n_elements). factorize() calls it
+       * itself if the Schur route needs V before.
        */
       void
       assemble_coupling();
@@ -99,13 +121,20 @@ namespace dpana
       factorize();
 
       /**
-       * A, s_o, G, e by blocked solves: @p columns_per_pass columns of V at a
-       * time (Parameters::columns_per_solve) are handed to
+       * A, s_o, G, e. By the Method of the parameters: through the factor of
+       * the Schur complement, or by blocked solves, @p columns_per_pass
+       * columns of V at a time (Parameters::columns_per_solve) handed to
        * SparseCholesky::solve() (which itself works in blocks of its block
        * size).
        */
       void
       condense(const unsigned int columns_per_pass = 256);
+
+      Method
+      method() const
+      {
+        return parameters.method;
+      }
 
       /**
        * The displacement u = u_o + K_s^{-1} V r + R alpha of the body.
@@ -166,8 +195,27 @@ namespace dpana
       }
 
     private:
+      /**
+       * The degrees of freedom of the nonzero rows of V.
+       */
+      std::vector<unsigned int>
+      surface_dofs() const;
+
+      /**
+       * A = W_Gamma^T W_Gamma (see the class documentation).
+       */
+      void
+      condense_through_schur_complement();
+
+      /**
+       * A = V^T Z, Z by blocked solves, then symmetrised.
+       */
+      void
+      condense_by_blocked_solves(const unsigned int columns_per_pass);
+
       const Body<dim>                            &body;
       const contact_surface::ContactSurface<dim> &surface;
+      const Parameters                            parameters;
 
       Eigen::SparseMatrix<double>       V;
       Eigen::MatrixXd                   R;

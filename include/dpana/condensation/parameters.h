@@ -11,14 +11,29 @@ namespace dpana
   namespace condensation
   {
     /**
-     * The parameters of the condensation: how many columns of the coupling
-     * operator V are handed at once to the blocked sparse Cholesky solves
-     * of Condenser::condense(). The number changes the time and the memory
-     * of the condensation (a dense block of n_dofs x columns), not its
-     * result beyond round-off. In a parameter file it is the entry
+     * The two ways Condenser computes A = V_r^T K_r^{-1} V_r (see
+     * Condenser): through the Cholesky factor of the Schur complement of
+     * K_r on the contact surface, or by blocked solves with the columns of
+     * V.
+     */
+    enum class Method
+    {
+      schur,
+      blocked_solves
+    };
+
+    /**
+     * The parameters of the condensation: the Method, and, for the blocked
+     * solves, how many columns of the coupling operator V are handed at once
+     * to the sparse Cholesky solves of Condenser::condense(). Neither changes
+     * the result beyond round-off; they change the time and the memory of
+     * the condensation (the blocked solves hold a dense block of n_dofs x
+     * columns, the Schur route one of n_Gamma x n_c, n_Gamma the dofs on the
+     * surface). In a parameter file they are the entries
      *
      *     subsection Contact
-     *       set Columns per solve = 256
+     *       set Condensation method = schur
+     *       set Columns per solve   = 256
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -26,18 +41,19 @@ namespace dpana
      */
     struct Parameters
     {
+      Method       method            = Method::schur;
       unsigned int columns_per_solve = 256;
 
       /**
-       * Declare the entry Columns per solve in the current subsection of
-       * @p prm.
+       * Declare the entries Condensation method and Columns per solve in the
+       * current subsection of @p prm.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
-       * Read the entry Columns per solve from the current subsection of
-       * @p prm.
+       * Read the entries Condensation method and Columns per solve from the
+       * current subsection of @p prm.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);

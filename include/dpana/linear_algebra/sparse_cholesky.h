@@ -111,6 +111,52 @@ namespace dpana
                 const dealii::AffineConstraints<double> &constraints);
 
       /**
+       * Factor $K_r$ as factorize(K, constraints) does, with the free
+       * degrees of freedom that @p last_dofs stand for (the dofs themselves,
+       * or the masters of the constrained ones) ordered last: the ordering
+       * is $P = $ [CHOLMOD's fill-reducing ordering of the other unknowns,
+       * then these]. With $K_r = P^T L L^T P$, the last diagonal block
+       * $L_{22}$ of $L$ ($n_\Gamma \times n_\Gamma$) is then the Cholesky
+       * factor of the Schur complement of $K_r$ on these unknowns, and for a
+       * right-hand side $B$ that vanishes outside them,
+       * $B^T K_r^{-1} B = W^T W$ with $W = L_{22}^{-1} B_\Gamma$.
+       *
+       * This, solve_schur_factor() and schur_dofs() are what the Schur route
+       * of the condensation needs of a factorisation; another back end (a
+       * multifrontal solver with a Schur option, which returns the Schur
+       * complement itself: its dense Cholesky factor then plays the part of
+       * $L_{22}$) provides the same three.
+       */
+      void
+      factorize_with_last(const dealii::SparseMatrix<double>      &K,
+                          const dealii::AffineConstraints<double> &constraints,
+                          const std::vector<unsigned int>         &last_dofs);
+
+      /**
+       * The dense lower triangular $L_{22}$ of factorize_with_last(): row
+       * and column k belong to the degree of freedom schur_dofs()[k]. A
+       * copy of $n_\Gamma^2$ numbers, for checks; the condensation uses
+       * solve_schur_factor().
+       */
+      Eigen::MatrixXd
+      schur_factor() const;
+
+      /**
+       * $W \leftarrow L_{22}^{-1} W$ for @p W of n_Gamma rows (in the order
+       * of schur_dofs()), in place, working on the supernodes of the factor
+       * itself (no copy of $L_{22}$).
+       */
+      void
+      solve_schur_factor(Eigen::MatrixXd &W) const;
+
+      /**
+       * The free degrees of freedom of the last block, in the order of the
+       * rows of schur_factor().
+       */
+      const std::vector<unsigned int> &
+      schur_dofs() const;
+
+      /**
        * True once a factorisation is available.
        */
       bool
@@ -197,8 +243,22 @@ namespace dpana
                       dealii::Vector<double>       &u) const;
 
     private:
+      /**
+       * Number the free degrees of freedom, copy the constraint lines and
+       * return the lower triangle of $K_r$.
+       */
+      Eigen::SparseMatrix<double>
+      reduce(const dealii::SparseMatrix<double>      &K,
+             const dealii::AffineConstraints<double> &constraints);
+
       void
       factorize_lower(const Eigen::SparseMatrix<double> &K_lower);
+
+      /**
+       * Analyse again with the unknowns of #last at the end.
+       */
+      void
+      order_last(const Eigen::SparseMatrix<double> &K_lower);
 
       struct Impl;
       std::unique_ptr<Impl> impl;
@@ -220,6 +280,11 @@ namespace dpana
         double                                       inhomogeneity;
       };
       std::vector<Line> lines;
+
+      // The reduced unknowns to be ordered last (empty: CHOLMOD's ordering),
+      // and their degrees of freedom in the order of the factor.
+      std::vector<unsigned int> last;
+      std::vector<unsigned int> schur;
     };
   } // namespace linear_algebra
 } // namespace dpana

@@ -74,6 +74,7 @@ namespace
   using dpana::test::hertz_prm;
   using dpana::test::make_scene;
 
+
   // The Hertz cylinder (quarter disc R = 40, 100 kN/mm on the half model)
   // on a rigid plane, with m contact refinements.
 } // namespace
@@ -191,21 +192,7 @@ TEST(Condensation, ColumnsAreFESolvesWithUnitTractions)
 // one the contact run solves, to the last digit.
 TEST(Condensation, ContactProblemOfTwoFloatingBodies)
 {
-  const std::string foundation = "  subsection Geometry\n"
-                                 "    set Type = rectangle\n"
-                                 "    subsection Rectangle\n"
-                                 "      set Lower corner = 0, -40\n"
-                                 "      set Upper corner = 40, 0\n"
-                                 "      set Subdivisions = 8, 8\n"
-                                 "    end\n"
-                                 "  end\n"
-                                 "  subsection Boundary conditions\n"
-                                 "    set Symmetry = left\n"
-                                 "    set Fixed = bottom: x\n"
-                                 "  end\n"
-                                 "  subsection Loads\n"
-                                 "    set Pressure = bottom: 100\n"
-                                 "  end\n";
+  const std::string foundation = dpana::test::floating_foundation();
   auto              s = make_scene<2>(hertz_prm(1, 15, 0.3, foundation), 2);
   s->assemble();
   s->build_contact_surface();
@@ -276,7 +263,7 @@ TEST(Condensation, ContactProblemOfHeldBody)
 
 
 
-// The condensation declares and parses its own entry.
+// The condensation declares and parses its own entries.
 TEST(Condensation, ColumnsPerSolveParameter)
 {
   dealii::ParameterHandler prm;
@@ -290,6 +277,10 @@ TEST(Condensation, ColumnsPerSolveParameter)
   prm.set("Columns per solve", "7");
   parameters.parse_parameters(prm);
   EXPECT_EQ(parameters.columns_per_solve, 7u);
+  EXPECT_EQ(parameters.method, condensation::Method::schur);
+  prm.set("Condensation method", "blocked solves");
+  parameters.parse_parameters(prm);
+  EXPECT_EQ(parameters.method, condensation::Method::blocked_solves);
   prm.leave_subsection();
 }
 

@@ -143,6 +143,30 @@ namespace dpana
              "  set Friction coefficient = " +
              std::to_string(mu) + "\n" + contact + "end\n";
     }
+
+    /**
+     * Body 2 of hertz_prm(): a 40 x 40 foundation under the plane y = 0,
+     * held only in x (free to move along the axis), pressed from below.
+     */
+    inline std::string
+    floating_foundation()
+    {
+      return "  subsection Geometry\n"
+             "    set Type = rectangle\n"
+             "    subsection Rectangle\n"
+             "      set Lower corner = 0, -40\n"
+             "      set Upper corner = 40, 0\n"
+             "      set Subdivisions = 8, 8\n"
+             "    end\n"
+             "  end\n"
+             "  subsection Boundary conditions\n"
+             "    set Symmetry = left\n"
+             "    set Fixed = bottom: x\n"
+             "  end\n"
+             "  subsection Loads\n"
+             "    set Pressure = bottom: 100\n"
+             "  end\n";
+    }
   } // namespace test
 } // namespace dpana
 

@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -66,6 +67,53 @@ namespace
         }
     }
   };
+
+  // The matrix of @p A and the right-hand side @p b assembled with
+  // @p constraints as a body would: from "element" contributions, here the
+  // diagonal entries and the off-diagonal pairs as 2 x 2 elements with zero
+  // diagonal.
+  struct CondensedSystem
+  {
+    dealii::SparsityPattern      pattern;
+    dealii::SparseMatrix<double> K;
+    dealii::Vector<double>       f;
+
+    CondensedSystem(const TestMatrix                        &A,
+                    const dealii::AffineConstraints<double> &constraints,
+                    const Eigen::VectorXd                   &b)
+    {
+      const unsigned int             N = b.size();
+      dealii::DynamicSparsityPattern dsp(N, N);
+      for (unsigned int i = 0; i < N; ++i)
+        for (unsigned int j = 0; j < N; ++j)
+          if (A.dense(i, j) != 0.0)
+            dsp.add(i, j);
+      constraints.condense(dsp);
+      pattern.copy_from(dsp);
+      K.reinit(pattern);
+      f.reinit(N);
+      for (unsigned int i = 0; i < N; ++i)
+        for (unsigned int j = i; j < N; ++j)
+          if (A.dense(i, j) != 0.0)
+            {
+              std::vector<dealii::types::global_dof_index> dofs = {i};
+              dealii::FullMatrix<double>                   local(1, 1);
+              dealii::Vector<double>                       rhs(1);
+              local(0, 0) = A.dense(i, i);
+              rhs[0]      = b(i);
+              if (j != i)
+                {
+                  dofs        = {i, j};
+                  local       = dealii::FullMatrix<double>(2, 2);
+                  local(0, 1) = local(1, 0) = A.dense(i, j);
+                  rhs.reinit(2);
+                }
+              constraints.distribute_local_to_global(local, rhs, dofs, K, f);
+            }
+    }
+  };
+
+
 
   Eigen::MatrixXd
   random_matrix(const unsigned int rows, const unsigned int cols)
@@ -130,40 +178,10 @@ TEST(SparseCholesky, ReducedSystemMatchesExplicitElimination)
   constraints.set_inhomogeneity(N - 1, 0.25);
   constraints.close();
 
-  // Assemble the condensed matrix and right-hand side as a body would: from
-  // "element" contributions, here single entries of the full matrix.
-  dealii::DynamicSparsityPattern dsp(N, N);
-  for (unsigned int i = 0; i < N; ++i)
-    for (unsigned int j = 0; j < N; ++j)
-      if (A.dense(i, j) != 0.0)
-        dsp.add(i, j);
-  constraints.condense(dsp);
-  dealii::SparsityPattern pattern;
-  pattern.copy_from(dsp);
-  dealii::SparseMatrix<double> K(pattern);
-  dealii::Vector<double>       f(N);
-  const Eigen::MatrixXd        b = random_matrix(N, 1);
-  for (unsigned int i = 0; i < N; ++i)
-    {
-      dealii::FullMatrix<double>                   local(1, 1);
-      dealii::Vector<double>                       local_rhs(1);
-      std::vector<dealii::types::global_dof_index> dofs = {i};
-      local(0, 0)                                       = A.dense(i, i);
-      local_rhs[0]                                      = b(i, 0);
-      constraints.distribute_local_to_global(local, local_rhs, dofs, K, f);
-      for (unsigned int j = 0; j < N; ++j)
-        if (j != i && A.dense(i, j) != 0.0)
-          {
-            // An off-diagonal pair as a 2x2 element with zero diagonal.
-            if (j < i)
-              continue;
-            dealii::FullMatrix<double>                   pair(2, 2);
-            dealii::Vector<double>                       zero(2);
-            std::vector<dealii::types::global_dof_index> pdofs = {i, j};
-            pair(0, 1) = pair(1, 0) = A.dense(i, j);
-            constraints.distribute_local_to_global(pair, zero, pdofs, K, f);
-          }
-    }
+  const Eigen::MatrixXd         b = random_matrix(N, 1);
+  CondensedSystem               system(A, constraints, b.col(0));
+  dealii::SparseMatrix<double> &K = system.K;
+  dealii::Vector<double>       &f = system.f;
 
   SparseCholesky cholesky;
   cholesky.factorize(K, constraints);
@@ -194,6 +212,99 @@ TEST(SparseCholesky, ReducedSystemMatchesExplicitElimination)
     M * K_r.ldlt().solve(M.transpose() * (b.col(0) - A.dense * u_bar)) + u_bar;
   for (unsigned int i = 0; i < N; ++i)
     EXPECT_NEAR(u_h[i], u_inhom(i), 1e-12 * u_inhom.norm()) << "dof " << i;
+}
+
+
+
+// With the unknowns of a surface ordered last (factorize_with_last()), the
+// last diagonal block L_22 of the factor is the Cholesky factor of the Schur
+// complement S = K_GG - K_GI K_II^{-1} K_IG, checked against a dense
+// Cholesky factorisation of S computed independently, in the order of
+// schur_dofs(). The surface: the first grid row (as a contact surface on the
+// boundary) and two scattered interior unknowns, one of them a constrained
+// dof standing for its masters, one a Dirichlet dof standing for none. The
+// solve with this ordering stays the plain K_r^{-1} b.
+TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
+{
+  const unsigned int n = 12, N = n * n;
+  TestMatrix         A(n, 0.0);
+
+  dealii::AffineConstraints<double> constraints;
+  constraints.add_line(N - 1);
+  constraints.add_line(7 * n + 5);
+  constraints.add_entry(7 * n + 5, 7 * n + 6, 1.0);
+  constraints.close();
+  const CondensedSystem system(A, constraints, Eigen::VectorXd::Zero(N));
+  const auto           &K = system.K;
+
+  std::vector<unsigned int> surface;
+  for (unsigned int j = 0; j < n; ++j)
+    surface.push_back(j);
+  surface.push_back(4 * n + 3);
+  surface.push_back(7 * n + 5);
+  surface.push_back(N - 1);
+
+  SparseCholesky cholesky;
+  cholesky.factorize_with_last(K, constraints, surface);
+  const auto &dofs = cholesky.schur_dofs();
+  ASSERT_EQ(dofs.size(), n + 2);
+  std::vector<unsigned int> sorted(dofs);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<unsigned int> expected(surface.begin(), surface.begin() + n);
+  expected.push_back(4 * n + 3);
+  expected.push_back(7 * n + 6);
+  EXPECT_EQ(sorted, expected);
+
+  // The reduced matrix and its Schur complement on the surface, dense.
+  const auto      &free = cholesky.free_dofs();
+  Eigen::MatrixXd  M    = Eigen::MatrixXd::Zero(N, free.size());
+  std::vector<int> position(N, -1);
+  for (unsigned int k = 0; k < free.size(); ++k)
+    {
+      M(free[k], k)     = 1.0;
+      position[free[k]] = k;
+    }
+  M.row(7 * n + 5)          = M.row(7 * n + 6);
+  const Eigen::MatrixXd K_r = M.transpose() * A.dense * M;
+  std::vector<int>      is_surface(free.size(), -1), interior;
+  for (unsigned int k = 0; k < dofs.size(); ++k)
+    is_surface[position[dofs[k]]] = k;
+  for (unsigned int k = 0; k < free.size(); ++k)
+    if (is_surface[k] < 0)
+      interior.push_back(k);
+  const unsigned int ng = dofs.size(), ni = interior.size();
+  Eigen::MatrixXd    K_GG(ng, ng), K_GI(ng, ni), K_II(ni, ni);
+  for (unsigned int a = 0; a < ng; ++a)
+    {
+      for (unsigned int b = 0; b < ng; ++b)
+        K_GG(a, b) = K_r(position[dofs[a]], position[dofs[b]]);
+      for (unsigned int b = 0; b < ni; ++b)
+        K_GI(a, b) = K_r(position[dofs[a]], interior[b]);
+    }
+  for (unsigned int a = 0; a < ni; ++a)
+    for (unsigned int b = 0; b < ni; ++b)
+      K_II(a, b) = K_r(interior[a], interior[b]);
+  const Eigen::MatrixXd S =
+    K_GG - K_GI * K_II.llt().solve(Eigen::MatrixXd(K_GI.transpose()));
+  const Eigen::MatrixXd L_S = S.llt().matrixL();
+
+  const Eigen::MatrixXd L22 = cholesky.schur_factor();
+  EXPECT_LT((L22 - L_S).norm(), 1e-12 * L_S.norm());
+  EXPECT_EQ(Eigen::MatrixXd(L22.triangularView<Eigen::StrictlyUpper>()).norm(),
+            0.0);
+
+  // The forward substitution on the supernodes equals the dense one.
+  const Eigen::MatrixXd B = random_matrix(ng, 5);
+  Eigen::MatrixXd       W = B;
+  cholesky.solve_schur_factor(W);
+  const Eigen::MatrixXd W_reference =
+    L_S.triangularView<Eigen::Lower>().solve(B);
+  EXPECT_LT((W - W_reference).norm(), 1e-12 * W_reference.norm());
+
+  const Eigen::MatrixXd b           = random_matrix(N, 3);
+  const Eigen::MatrixXd u           = cholesky.solve(b);
+  const Eigen::MatrixXd u_reference = M * K_r.llt().solve(M.transpose() * b);
+  EXPECT_LT((u - u_reference).norm(), 1e-12 * u_reference.norm());
 }
 
 
