@@ -87,7 +87,7 @@ namespace
   void
   expect_same_gaps(const scene::Scene<dim> &one,
                    const scene::Scene<dim> &two,
-                   const double                    L)
+                   const double             L)
   {
     const auto &rigid = one.surface(0), &paired = two.surface(0);
     ASSERT_EQ(rigid.n_elements(), paired.n_elements());
@@ -224,15 +224,15 @@ namespace
 
 
 // Patch test of the 2D mortar projection. The stacked blocks have the
-// exact solution of the receding block (the reference formulation, section 4.2.1) in both
-// bodies: the uniform stress sigma_xx = -100, sigma_yy = -50 MPa, with a
-// linear displacement that P1 elements represent exactly, and a uniform
-// contact pressure of 50 MPa. The interface discretisations do not match
-// (16 edges against 13), yet the projection integrates the shape functions
-// of both sides exactly, so every contact element must carry N = -50 MPa,
-// T = 0 up to round-off, and the forces on the two sides must balance:
-// the columns of V1 and V2 add up to the element's projected length along
-// +n and -n.
+// exact solution of the receding block (the reference formulation,
+// section 4.2.1) in both bodies: the uniform stress sigma_xx = -100, sigma_yy =
+// -50 MPa, with a linear displacement that P1 elements represent exactly, and a
+// uniform contact pressure of 50 MPa. The interface discretisations do not
+// match (16 edges against 13), yet the projection integrates the shape
+// functions of both sides exactly, so every contact element must carry N = -50
+// MPa, T = 0 up to round-off, and the forces on the two sides must balance: the
+// columns of V1 and V2 add up to the element's projected length along +n and
+// -n.
 TEST(ContactSurface, NonMatchingPatchTest2D)
 {
   auto s = make_scene<2>(stacked_prm(16, 13), 2);

@@ -174,11 +174,11 @@ namespace
 
   // @sect3{The sign convention on a problem with a known solution}
   //
-  // One 2D element, A = diag(2, 4), D = (1, 3), mu = 0.5. By hand (the reference formulation's
-  // convention): the element is pressed (D_N > 0), so u_N = 2 N + 1 = 0
-  // gives N = -1/2; sticking would need T = -D_T/4 = -3/4, beyond the
-  // capacity -mu N = 1/4, so it slips with T = -1/4 (opposite to D_T) and
-  // u_T = 4 T + 3 = 2 = -lambda T with lambda = 8 >= 0. Solution:
+  // One 2D element, A = diag(2, 4), D = (1, 3), mu = 0.5. By hand (the
+  // reference formulation's convention): the element is pressed (D_N > 0), so
+  // u_N = 2 N + 1 = 0 gives N = -1/2; sticking would need T = -D_T/4 = -3/4,
+  // beyond the capacity -mu N = 1/4, so it slips with T = -1/4 (opposite to
+  // D_T) and u_T = 4 T + 3 = 2 = -lambda T with lambda = 8 >= 0. Solution:
   //   r = (-1/2, -1/4),  u = (0, 2).
   // In FCLIB's convention the same state is r_s = (1/2, 1/4) (compression
   // positive, inside the cone r_{s,T} <= mu r_{s,N} with equality),

@@ -47,8 +47,8 @@ namespace
            "end\n";
   }
 
-  // The receding block of the reference formulation, section 4.2.1 (16 x 16 cells, rigid
-  // foundation) with Poisson's ratio nu.
+  // The receding block of the reference formulation, section 4.2.1 (16 x 16
+  // cells, rigid foundation) with Poisson's ratio nu.
   std::string
   block_prm(const double nu, const double mu, const std::string &solver)
   {

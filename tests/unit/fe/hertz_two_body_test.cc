@@ -2,9 +2,10 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 //
-// Hertz contact between two elastic bodies (the reference formulation, section 4.3) through
-// the 2D projection pairing of non-matching surfaces: a stiff foundation
-// against the rigid plane, and the cylinder in a cavity under refinement.
+// Hertz contact between two elastic bodies (the reference formulation,
+// section 4.3) through the 2D projection pairing of non-matching surfaces: a
+// stiff foundation against the rigid plane, and the cylinder in a cavity under
+// refinement.
 
 #include <dpana/scene/scene.h>
 
@@ -53,9 +54,9 @@ namespace
 
 
 // A foundation a thousand times stiffer than the cylinder (E1/E2 = 1e-3,
-// the reference formulation's model of a rigid foundation, table 4.2) must give nearly the
-// tractions of the rigid plane y = 0 (the Signorini problem of the same
-// cylinder mesh, solved without a second body). The two runs share the
+// the reference formulation's model of a rigid foundation, table 4.2) must give
+// nearly the tractions of the rigid plane y = 0 (the Signorini problem of the
+// same cylinder mesh, solved without a second body). The two runs share the
 // cylinder's mesh and contact elements; they differ by the foundation's
 // compliance, 1e-3 of the cylinder's, and by the route: projection pairing
 // with a condensed second body against a plane gap. The tractions are
@@ -102,12 +103,12 @@ TEST(HertzTwoBody, StiffFoundationApproachesRigidPlane)
 
 namespace
 {
-  // The cylinder in a cavity of the reference formulation, section 4.3, table 4.4 (as
-  // prm/hertz_cavity_mu0.prm): the cylinder of hertz_prm() with m contact
-  // refinements within 21 mm of the origin, in the quarter ring
-  // 120 <= r <= 360 around (0, 120) with m + 1 contact refinements there
-  // (its arc is 3 times longer per degree), frictionless, candidate surface
-  // the arc within 20 mm, Hertz reference for the cavity.
+  // The cylinder in a cavity of the reference formulation, section 4.3,
+  // table 4.4 (as prm/hertz_cavity_mu0.prm): the cylinder of hertz_prm() with m
+  // contact refinements within 21 mm of the origin, in the quarter ring 120 <=
+  // r <= 360 around (0, 120) with m + 1 contact refinements there (its arc is 3
+  // times longer per degree), frictionless, candidate surface the arc within 20
+  // mm, Hertz reference for the cavity.
   std::string
   cavity_prm(const unsigned int m)
   {
@@ -146,15 +147,15 @@ namespace
 
 // The cylinder in the cavity under refinement of both arcs (contact
 // elements of 2, 1 and 0.5 mm). Hertz (plane strain, 1/R = 1/R1 - 1/R2,
-// R = 60 mm): a = 15.02 mm, N_max = 8476 MPa; the reference formulation's table 4.4 gives
-// a = 13.96 mm, N_max = 8914.6 MPa for mu = 0. Here a / R1 is about 0.35,
-// well beyond Hertz's small-contact assumption, and the finite ring is
-// stiffer than the infinite plane with a hole, so the test asserts:
-// (1) N_max converges: the last change is below 1 % and below the previous
-// one; (2) N_max of the finest mesh lies within 3 % of the reference table and
-// within 8 % of Hertz; (3) a of every mesh agrees with the reference table
-// within one contact element size (a is known to the element that ends
-// the contact zone), and is below Hertz's.
+// R = 60 mm): a = 15.02 mm, N_max = 8476 MPa; the reference formulation's
+// table 4.4 gives a = 13.96 mm, N_max = 8914.6 MPa for mu = 0. Here a / R1 is
+// about 0.35, well beyond Hertz's small-contact assumption, and the finite ring
+// is stiffer than the infinite plane with a hole, so the test asserts: (1)
+// N_max converges: the last change is below 1 % and below the previous one; (2)
+// N_max of the finest mesh lies within 3 % of the reference table and within 8
+// % of Hertz; (3) a of every mesh agrees with the reference table within one
+// contact element size (a is known to the element that ends the contact zone),
+// and is below Hertz's.
 TEST(HertzTwoBody, CylinderInCavityConverges)
 {
   const double a_table = 13.96, N_table = 8914.6;
@@ -182,10 +183,10 @@ TEST(HertzTwoBody, CylinderInCavityConverges)
       std::cout << "Cylinder in cavity, contact refinements " << m
                 << ": a = " << a.back() << " mm (element " << size
                 << " mm), N_max = " << N.back()
-                << " MPa; relative to the reference table " << a.back() / a_table - 1
-                << ", " << N.back() / N_table - 1 << "; to Hertz "
-                << a.back() / a_H - 1 << ", " << N.back() / N_H - 1
-                << std::endl;
+                << " MPa; relative to the reference table "
+                << a.back() / a_table - 1 << ", " << N.back() / N_table - 1
+                << "; to Hertz " << a.back() / a_H - 1 << ", "
+                << N.back() / N_H - 1 << std::endl;
     }
   EXPECT_LT(std::abs(N[2] - N[1]) / N[2], 0.01);
   EXPECT_LT(std::abs(N[2] - N[1]), std::abs(N[1] - N[0]));
