@@ -116,48 +116,32 @@ TEST(Condensation, SchurRouteEqualsBlockedSolves2DTwoFloatingBodies)
 // a held 3D foundation; and the block alone.
 TEST(Condensation, SchurRouteEqualsBlockedSolves3D)
 {
-  const auto box = [](const std::string &lower,
-                      const std::string &upper,
-                      const std::string &conditions,
-                      const std::string &loads) {
-    return "  subsection Geometry\n"
-           "    set Type = box\n"
-           "    subsection Box\n"
-           "      set Lower corner = " +
-           lower +
-           "\n"
-           "      set Upper corner = " +
-           upper +
-           "\n"
-           "      set Subdivisions = 8, 4, 4\n"
-           "    end\n"
-           "  end\n"
-           "  subsection Boundary conditions\n" +
-           conditions +
-           "  end\n"
-           "  subsection Loads\n" +
-           loads + "  end\n";
-  };
-  const std::string block = box("0, 0, 0",
-                                "40, 20, 20",
-                                "    set Symmetry = left, front\n",
-                                "    set Pressure = top: 50; right: 100\n");
+  using dpana::test::brick_body;
+  const std::string block =
+    brick_body("Body 1",
+               "box",
+               "0, 0, 0",
+               "40, 20, 20",
+               "8, 4, 4",
+               "    set Symmetry = left, front\n",
+               "    set Pressure = top: 50; right: 100\n");
   const std::string foundation =
-    box("0, -20, 0",
-        "40, 0, 20",
-        "    set Symmetry = left, front\n    set Fixed = bottom: y\n",
-        "");
+    brick_body("Body 2",
+               "box",
+               "0, -20, 0",
+               "40, 0, 20",
+               "8, 4, 4",
+               "    set Symmetry = left, front\n    set Fixed = bottom: y\n",
+               "");
   const std::string contact = "subsection Contact\n"
                               "  set Boundary 1 = bottom\n"
                               "  set Contact direction = 0, -1, 0\n";
-  auto one = make_scene<3>("set Dimension = 3\nsubsection Body 1\n" + block +
-                           "end\n" + contact + "end\n");
+  auto one = make_scene<3>("set Dimension = 3\n" + block + contact + "end\n");
   expect_routes_agree(*one);
-  auto two = make_scene<3>(
-    "set Dimension = 3\nset Number of bodies = 2\nsubsection Body 1\n" + block +
-      "end\nsubsection Body 2\n" + foundation + "end\n" + contact +
-      "  set Boundary 2 = top\nend\n",
-    2);
+  auto two =
+    make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" + block +
+                    foundation + contact + "  set Boundary 2 = top\nend\n",
+                  2);
   expect_routes_agree(*two);
   EXPECT_EQ(condensed(*two, 0, condensation::Method::schur)->n_free_modes(),
             1u);

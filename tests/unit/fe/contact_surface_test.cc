@@ -22,38 +22,7 @@
 namespace
 {
   using namespace dpana;
-
-  // A body of type rectangle or box between `lower` and `upper` with
-  // `cells` subdivisions, with the given lines of its Boundary conditions
-  // and Loads subsections.
-  std::string
-  brick_body(const std::string &name,
-             const std::string &type,
-             const std::string &lower,
-             const std::string &upper,
-             const std::string &cells,
-             const std::string &conditions,
-             const std::string &loads)
-  {
-    return "subsection " + name +
-           "\n"
-           "  subsection Geometry\n"
-           "    set Type = " +
-           type + "\n    subsection " + (type == "box" ? "Box" : "Rectangle") +
-           "\n      set Lower corner = " + lower +
-           "\n      set Upper corner = " + upper +
-           "\n      set Subdivisions = " + cells +
-           "\n"
-           "    end\n"
-           "  end\n"
-           "  subsection Boundary conditions\n" +
-           conditions +
-           "  end\n"
-           "  subsection Loads\n" +
-           loads +
-           "  end\n"
-           "end\n";
-  }
+  using dpana::test::brick_body;
 
   // The box [0, 8] x [0, 2] x [0, 4] of 4 x 1 x 2 cells, fixed on its top:
   // Body 1 of the 3D surface tests.

@@ -167,6 +167,39 @@ namespace dpana
              "    set Pressure = bottom: 100\n"
              "  end\n";
     }
+
+    // A body of type rectangle or box between `lower` and `upper` with
+    // `cells` subdivisions, with the given lines of its Boundary conditions
+    // and Loads subsections.
+    inline std::string
+    brick_body(const std::string &name,
+               const std::string &type,
+               const std::string &lower,
+               const std::string &upper,
+               const std::string &cells,
+               const std::string &conditions,
+               const std::string &loads)
+    {
+      return "subsection " + name +
+             "\n"
+             "  subsection Geometry\n"
+             "    set Type = " +
+             type + "\n    subsection " +
+             (type == "box" ? "Box" : "Rectangle") +
+             "\n      set Lower corner = " + lower +
+             "\n      set Upper corner = " + upper +
+             "\n      set Subdivisions = " + cells +
+             "\n"
+             "    end\n"
+             "  end\n"
+             "  subsection Boundary conditions\n" +
+             conditions +
+             "  end\n"
+             "  subsection Loads\n" +
+             loads +
+             "  end\n"
+             "end\n";
+    }
   } // namespace test
 } // namespace dpana
 
