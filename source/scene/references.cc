@@ -31,6 +31,28 @@ namespace dpana
 
 
 
+    HertzLineContact
+    hertz_line_contact(const double load,
+                       const double compliance,
+                       const double radius_1,
+                       const double radius_2)
+    {
+      AssertThrow(load > 0 && compliance > 0 && radius_1 > 0 &&
+                    (radius_2 >= 0 || -radius_2 > radius_1),
+                  dealii::ExcMessage(
+                    "Hertz: the load, the compliance and Radius 1 must be "
+                    "positive, and a cavity larger than the cylinder"));
+      double R = radius_1;
+      if (radius_2 > 0)
+        R = radius_1 * radius_2 / (radius_1 + radius_2);
+      else if (radius_2 < 0)
+        R = radius_1 * (-radius_2) / (-radius_2 - radius_1);
+      const double a = std::sqrt(4 * load * compliance * R);
+      return {a, 2 * load / (M_PI * a)};
+    }
+
+
+
     template <int dim>
     void
     References<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -204,13 +226,10 @@ namespace dpana
       };
       const double k1 = k(bodies[0]->material());
       const double k2 = bodies.size() > 1 ? k(bodies[1]->material()) : 0;
-      double       R  = radius_1;
-      if (radius_2 > 0)
-        R = radius_1 * radius_2 / (radius_1 + radius_2);
-      else if (radius_2 < 0)
-        R = radius_1 * (-radius_2) / (-radius_2 - radius_1);
-      const double a_H = std::sqrt(4 * hertz_load * (k1 + k2) * R);
-      const double N_H = 2 * hertz_load / (M_PI * a_H);
+      const HertzLineContact hertz =
+        hertz_line_contact(hertz_load, k1 + k2, radius_1, radius_2);
+      const double a_H = hertz.half_width;
+      const double N_H = hertz.max_pressure;
       const double a = summary.half_width, N = summary.max_pressure;
 
       std::ostringstream out;

@@ -45,13 +45,10 @@ namespace Step5
   //    N_{\max} = \frac{2P}{\pi a}. $$
   // The formula treats the cylinder as an elastic half-plane whose surface
   // is the parabola $x^2/(2R)$: it holds when $a \ll R$.
-  struct HertzSolution
-  {
-    double a;
-    double max_pressure;
-  };
-
-  HertzSolution
+  // The library computes this formula for the references of a run
+  // (scene::hertz_line_contact(), with $k$ the sum of the compliances of
+  // the two bodies and the radius of the plane 0); the program calls it.
+  scene::HertzLineContact
   hertz_on_rigid_plane(const double P,
                        const double R,
                        const double E,
@@ -60,8 +57,7 @@ namespace Step5
     AssertThrow(P > 0 && R > 0 && E > 0 && nu >= 0 && nu < 0.5,
                 ExcMessage("Hertz: P, R, E must be positive, 0 <= nu < 1/2"));
     const double k = (1 - nu * nu) / (numbers::PI * E);
-    const double a = std::sqrt(4 * P * k * R);
-    return {a, 2 * P / (numbers::PI * a)};
+    return scene::hertz_line_contact(P, k, R, 0);
   }
 
   // @sect3{What one mesh gives}
@@ -126,9 +122,9 @@ namespace Step5
     // meshes; the Hertz solution and the two numbers of the file that the
     // checks need: the radius of the cylinder and the load of the half
     // model.
-    ParameterHandler prm;
-    HertzSolution    hertz;
-    double           radius, half_load;
+    ParameterHandler        prm;
+    scene::HertzLineContact hertz;
+    double                  radius, half_load;
 
     MeshResult
     solve_on(const unsigned int contact_refinements, const bool explain);
@@ -330,7 +326,7 @@ namespace Step5
   HertzConvergence::print_table(const std::vector<MeshResult> &results) const
   {
     std::cout << std::setprecision(6)
-              << "\nHertz (plane strain, rigid plane): a = " << hertz.a
+              << "\nHertz (plane strain, rigid plane): a = " << hertz.half_width
               << " mm, N_max = " << hertz.max_pressure << " MPa\n"
               << " ref elements   dofs   h (mm)   a (mm)     e_a    a_fit"
               << "    e_fit    N_max      e_N  delta_N time (s)\n";
@@ -342,9 +338,10 @@ namespace Step5
         std::cout << std::setw(4) << r.contact_refinements << std::setw(9)
                   << r.n_elements << std::setw(7) << r.n_dofs << std::fixed
                   << std::setprecision(4) << std::setw(9) << r.h << std::setw(9)
-                  << r.a << std::showpos << std::setw(8) << r.a / hertz.a - 1
-                  << std::noshowpos << std::setw(9) << r.a_fit << std::showpos
-                  << std::setw(9) << r.a_fit / hertz.a - 1 << std::noshowpos
+                  << r.a << std::showpos << std::setw(8)
+                  << r.a / hertz.half_width - 1 << std::noshowpos
+                  << std::setw(9) << r.a_fit << std::showpos << std::setw(9)
+                  << r.a_fit / hertz.half_width - 1 << std::noshowpos
                   << std::setprecision(1) << std::setw(9) << r.max_pressure
                   << std::showpos << std::setprecision(4) << std::setw(9)
                   << r.max_pressure / hertz.max_pressure - 1 << std::setw(9)
@@ -377,8 +374,8 @@ namespace Step5
       {
         table << r.contact_refinements << ',' << r.n_elements << ',' << r.n_dofs
               << ',' << r.h << ',' << r.a << ',' << r.a_fit << ','
-              << r.max_pressure << ',' << r.seconds << ',' << hertz.a << ','
-              << hertz.max_pressure << '\n';
+              << r.max_pressure << ',' << r.seconds << ',' << hertz.half_width
+              << ',' << hertz.max_pressure << '\n';
         for (const auto &[s, p] : r.profile)
           profile << r.contact_refinements << ',' << s << ',' << p << '\n';
       }
@@ -421,7 +418,7 @@ namespace Step5
 
     const MeshResult &finest = results.back();
     const double      e_N    = finest.max_pressure / hertz.max_pressure - 1;
-    const double      e_a    = finest.a / hertz.a - 1;
+    const double      e_a    = finest.a / hertz.half_width - 1;
     std::cout << std::setprecision(3) << "\nFinest mesh: N_max " << std::showpos
               << 100 * e_N << " %, a " << 100 * e_a << std::noshowpos
               << " % from Hertz (element size " << finest.h << " mm)\n"
@@ -431,7 +428,8 @@ namespace Step5
     std::cout << std::endl;
     AssertThrow(std::abs(e_N) < 0.04,
                 ExcMessage("N_max more than 4 % from Hertz"));
-    AssertThrow(std::abs(finest.a - hertz.a) < finest.h + 0.05 * hertz.a,
+    AssertThrow(std::abs(finest.a - hertz.half_width) <
+                  finest.h + 0.05 * hertz.half_width,
                 ExcMessage("a more than one element and 5 % from Hertz"));
   }
 } // namespace Step5

@@ -50,27 +50,17 @@ namespace Step6
   // and less: $E^{(1)}/E^{(2)} \to \infty$ is the rigid punch, $\to 0$ the
   // rigid foundation, and both give the same $a$ when the soft bodies are
   // of the same material.
-  struct HertzSolution
-  {
-    double a;
-    double max_pressure;
-  };
-
-  HertzSolution
+  // The library computes this formula for the references of a run
+  // (scene::hertz_line_contact(), with the cavity's negative radius and
+  // $k = k^{(1)} + k^{(2)}$); the program calls it.
+  scene::HertzLineContact
   hertz(const double P,
         const double R1,
         const double R2,
         const double k1,
         const double k2)
   {
-    // The relative curvature 1/R: the flat foundation adds nothing, the
-    // cavity (R2 < 0) subtracts its curvature. It must stay positive, or
-    // the surfaces would not touch at one point first.
-    const double curvature = 1 / R1 + (R2 == 0 ? 0 : 1 / R2);
-    AssertThrow(P > 0 && R1 > 0 && curvature > 0 && k1 >= 0 && k2 >= 0,
-                ExcMessage("Hertz: the surfaces must be convex together"));
-    const double a = std::sqrt(4 * P * (k1 + k2) / curvature);
-    return {a, 2 * P / (numbers::PI * a)};
+    return scene::hertz_line_contact(P, k1 + k2, R1, R2);
   }
 
   double
@@ -268,8 +258,8 @@ namespace Step6
     const double a_t = std::stod(entry(prm, reference, "Table half width"));
     const double N_t =
       std::stod(entry(prm, reference, "Table maximum pressure"));
-    const double        k = plane_strain_compliance(E, nu);
-    const HertzSolution h = hertz(2e5, R1, R2, k, k);
+    const double                  k = plane_strain_compliance(E, nu);
+    const scene::HertzLineContact h = hertz(2e5, R1, R2, k, k);
 
     // The scene is kept after the run: its contact surfaces hold the
     // mortar projection that the next function shows.
@@ -287,9 +277,9 @@ namespace Step6
               << "              a (mm)    N_max (MPa)\n"
               << "  dpana      " << std::setw(8) << r.a << std::setw(12)
               << r.max_pressure << "   (a known to h = " << r.h << " mm)\n"
-              << "  Hertz      " << std::setw(8) << h.a << std::setw(12)
-              << h.max_pressure << std::showpos << "   dpana: a "
-              << r.a / h.a - 1 << ", N_max "
+              << "  Hertz      " << std::setw(8) << h.half_width
+              << std::setw(12) << h.max_pressure << std::showpos
+              << "   dpana: a " << r.a / h.half_width - 1 << ", N_max "
               << r.max_pressure / h.max_pressure - 1 << std::noshowpos
               << "\n  table 4.4  " << std::setw(8) << a_t << std::setw(12)
               << N_t << std::showpos << "   dpana: a " << r.a / a_t - 1
@@ -301,7 +291,8 @@ namespace Step6
     std::ofstream csv("output/cavity.csv");
     csv << "s,pressure,hertz_a,hertz_max_pressure\n";
     for (const auto &[s, p] : r.profile)
-      csv << s << ',' << p << ',' << h.a << ',' << h.max_pressure << '\n';
+      csv << s << ',' << p << ',' << h.half_width << ',' << h.max_pressure
+          << '\n';
     return r.max_pressure / N_t - 1;
   }
 
@@ -351,11 +342,11 @@ namespace Step6
 
         // Hertz for a flat foundation (R2 = 0 stands for 1/R2 = 0) with the
         // compliances of both bodies, and the run.
-        const double        k1 = plane_strain_compliance(E1, nu);
-        const double        k2 = plane_strain_compliance(E2, nu);
-        const HertzSolution h  = hertz(2e5, 40, 0, k1, k2);
-        scene::Scene<2>     scene;
-        const RunResult     r = solve(prm, scene);
+        const double                  k1 = plane_strain_compliance(E1, nu);
+        const double                  k2 = plane_strain_compliance(E2, nu);
+        const scene::HertzLineContact h  = hertz(2e5, 40, 0, k1, k2);
+        scene::Scene<2>               scene;
+        const RunResult               r = solve(prm, scene);
 
         // The reference formulation's table of this ratio, if it has one.
         double a_t = 0, N_t = 0;
@@ -373,8 +364,8 @@ namespace Step6
           return N_t > 0 ? cell(x, format) : std::string("-");
         };
         std::cout << cell(ratio, "%8g") << cell(r.a, " %8.3f")
-                  << cell(h.a, " %8.3f") << std::setw(9) << tabled(a_t, "%.2f")
-                  << cell(r.max_pressure, " %8.0f")
+                  << cell(h.half_width, " %8.3f") << std::setw(9)
+                  << tabled(a_t, "%.2f") << cell(r.max_pressure, " %8.0f")
                   << cell(h.max_pressure, " %8.0f") << std::setw(9)
                   << tabled(N_t, "%.0f")
                   << cell(r.max_pressure / h.max_pressure - 1, " %+9.4f")
@@ -386,8 +377,8 @@ namespace Step6
         if (N_t > 0)
           worst = std::max(worst, std::abs(r.max_pressure / N_t - 1));
         csv << ratio << ',' << r.a << ',' << r.h << ',' << r.max_pressure << ','
-            << h.a << ',' << h.max_pressure << ',' << a_t << ',' << N_t << ','
-            << r.seconds << '\n';
+            << h.half_width << ',' << h.max_pressure << ',' << a_t << ',' << N_t
+            << ',' << r.seconds << '\n';
       }
     return worst;
   }

@@ -20,6 +20,30 @@ namespace dpana
   namespace scene
   {
     /**
+     * The plane Hertz solution of two cylinders pressed together.
+     */
+    struct HertzLineContact
+    {
+      double half_width;   // a (mm)
+      double max_pressure; // N_max = -N at the centre (MPa)
+    };
+
+    /**
+     * Two cylinders of radii R1 = @p radius_1 and R2 = @p radius_2 (0: a
+     * flat, < 0: a cavity of radius |R2| > R1) pressed together by the load
+     * P = @p load per unit length (N/mm) touch on a strip of half width
+     *     a = sqrt(4 P k R),   1/R = 1/R1 + 1/R2,   N_max = 2 P / (pi a),
+     * where @p compliance is k = k1 + k2, k_i = (1 - nu_i^2) / (pi E_i) in
+     * plane strain, 1 / (pi E_i) in plane stress, 0 for a rigid body (Hertz
+     * 1882; Johnson, Contact Mechanics, 1985, section 4.2).
+     */
+    HertzLineContact
+    hertz_line_contact(const double load,
+                       const double compliance,
+                       const double radius_1,
+                       const double radius_2);
+
+    /**
      * The references a contact run is compared with, `subsection Contact /
      * subsection Reference`:
      *
