@@ -25,11 +25,12 @@ namespace dpana
 
   namespace
   {
+    // The TimerOutput only collects the times (it never prints): its
+    // stream is a sink that nothing is written to.
     std::ostream &
     null_stream()
     {
       static std::ostringstream sink;
-      sink.str("");
       return sink;
     }
   } // namespace

@@ -46,7 +46,6 @@ namespace dpana
         throw InputError(what + ": cannot open '" + file + "'");
       CsvTable    table;
       std::string line;
-      table.file = file;
       if (!std::getline(in, line))
         throw InputError(what + ": '" + file + "' is empty");
       table.header = dealii::Utilities::split_string_list(line);

@@ -18,7 +18,6 @@ namespace dpana
      */
     struct CsvTable
     {
-      std::string                           file;
       std::vector<std::string>              header;
       std::vector<std::vector<std::string>> rows;
       std::vector<unsigned int>             line_numbers; // of each row
