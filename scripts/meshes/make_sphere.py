@@ -10,7 +10,8 @@ contact unknowns they give with 8 triangles per contact element (3 per
 element). `--level L` sets SizeFactor = 2^(-L/2), so that each level has
 about 2^(3/2) = 2.8 times the unknowns of the one before (level 0: the
 sizes of sphere.geo); `--set` passes any parameter of sphere.geo (R, Side,
-CapRadius, PoleRadius, SizeContact, SizeFar, Growth, SizeFactor). An
+CapRadius, PoleRadius, SizeContact, SizeFar, Growth, SizeFactor,
+Algorithm3D). An
 existing OUT.msh made with the same parameters is kept (the parameters are
 stored next to it in OUT.msh.args).
 """

@@ -16,7 +16,11 @@
 //   SizeFar     element size far from it
 //   Growth      growth of the element size per unit distance from the cap
 //   SizeFactor  multiplies every size: one knob for a refinement series
-//               (the number of unknowns grows like SizeFactor^-3)
+//               (the unknowns grow like SizeFactor^-2 while the cap's
+//               layer dominates, like SizeFactor^-3 once the volume does)
+//   Algorithm3D gmsh's 3D algorithm: 1 Delaunay (the default: the same mesh
+//               at every run), 10 HXT (parallel and faster on big meshes,
+//               but not reproducible from run to run)
 //
 // Named boundaries (physical surfaces): symmetry_x (the plane x = 0),
 // symmetry_z (z = 0), contact (the cap around the contact point), pole (the
@@ -31,7 +35,8 @@ Geometry.OCCBoundsUseStl = 1; // tight bounding boxes for the selections below
 
 DefineConstant[
   R = 40, Side = 1, CapRadius = 6, PoleRadius = 4,
-  SizeContact = 0.4, SizeFar = 6, Growth = 0.25, SizeFactor = 1
+  SizeContact = 0.4, SizeFar = 6, Growth = 0.25, SizeFactor = 1,
+  Algorithm3D = 1
 ];
 
 e  = 1e-6 * R;
@@ -106,7 +111,7 @@ Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
 Mesh.ElementOrder = 1;
-Mesh.Algorithm3D = 1;        // Delaunay: the same mesh at every run (HXT is not)
+Mesh.Algorithm3D = Algorithm3D;
 Mesh.Optimize = 1;
 Mesh.MshFileVersion = 2.2;
 Mesh.Binary = 0;
