@@ -27,6 +27,29 @@ namespace dpana
       {
         return ref != 0 ? (x - ref) / std::abs(ref) : 0.0;
       }
+
+
+
+      // The radius R of the Hertz formulas, 1/R = 1/R1 + 1/R2, of two
+      // curved surfaces pressed together by a positive load: R2 = 0 is a
+      // plane (R = R1), R2 < 0 a cavity or seat of radius |R2| > R1.
+      double
+      effective_radius(const double load,
+                       const double compliance,
+                       const double radius_1,
+                       const double radius_2)
+      {
+        AssertThrow(load > 0 && compliance > 0 && radius_1 > 0 &&
+                      (radius_2 >= 0 || -radius_2 > radius_1),
+                    dealii::ExcMessage(
+                      "Hertz: the load, the compliance and Radius 1 must be "
+                      "positive, and a cavity larger than Radius 1"));
+        if (radius_2 > 0)
+          return radius_1 * radius_2 / (radius_1 + radius_2);
+        if (radius_2 < 0)
+          return radius_1 * (-radius_2) / (-radius_2 - radius_1);
+        return radius_1;
+      }
     } // namespace
 
 
@@ -37,26 +60,9 @@ namespace dpana
                        const double radius_1,
                        const double radius_2)
     {
-      AssertThrow(load > 0 && compliance > 0 && radius_1 > 0 &&
-                    (radius_2 >= 0 || -radius_2 > radius_1),
-                  dealii::ExcMessage(
-                    "Hertz: the load, the compliance and Radius 1 must be "
-                    "positive, and a cavity larger than the cylinder"));
-      const double R = hertz_effective_radius(radius_1, radius_2);
+      const double R = effective_radius(load, compliance, radius_1, radius_2);
       const double a = std::sqrt(4 * load * compliance * R);
       return {a, 2 * load / (M_PI * a)};
-    }
-
-
-
-    double
-    hertz_effective_radius(const double radius_1, const double radius_2)
-    {
-      if (radius_2 > 0)
-        return radius_1 * radius_2 / (radius_1 + radius_2);
-      if (radius_2 < 0)
-        return radius_1 * (-radius_2) / (-radius_2 - radius_1);
-      return radius_1;
     }
 
 
@@ -67,12 +73,7 @@ namespace dpana
                         const double radius_1,
                         const double radius_2)
     {
-      AssertThrow(load > 0 && compliance > 0 && radius_1 > 0 &&
-                    (radius_2 >= 0 || -radius_2 > radius_1),
-                  dealii::ExcMessage(
-                    "Hertz: the load, the compliance and Radius 1 must be "
-                    "positive, and a seat larger than the sphere"));
-      const double R = hertz_effective_radius(radius_1, radius_2);
+      const double R = effective_radius(load, compliance, radius_1, radius_2);
       const double a = std::cbrt(3 * load * R * compliance / 4);
       return {a, 3 * load / (2 * M_PI * a * a), a * a / R};
     }

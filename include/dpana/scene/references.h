@@ -29,14 +29,6 @@ namespace dpana
     };
 
     /**
-     * The radius R of the Hertz formulas, 1/R = 1/R1 + 1/R2, of two curved
-     * surfaces of radii R1 = @p radius_1 and R2 = @p radius_2: R2 = 0 is a
-     * plane (R = R1), R2 < 0 a cavity or seat of radius |R2| > R1.
-     */
-    double
-    hertz_effective_radius(const double radius_1, const double radius_2);
-
-    /**
      * Two cylinders of radii R1 = @p radius_1 and R2 = @p radius_2 (0: a
      * flat, < 0: a cavity of radius |R2| > R1) pressed together by the load
      * P = @p load per unit length (N/mm) touch on a strip of half width
