@@ -10,6 +10,7 @@
 #include <dpana/scene/references.h>
 #include <dpana/scene/scene.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -93,13 +94,16 @@ namespace
 // R = 10 mm with E* = 150 000 MPa under P = 160 kN has
 // a^3 = 3 P R / (4 E*) = 4.8e6 / 6e5 = 8 mm^3, a = 2 mm, p0 = 3 P / (2 pi
 // a^2) = 60 000 / pi MPa, delta = a^2 / R = 0.4 mm. Two spheres of 20 mm
-// (1/R = 1/20 + 1/20) of twice the compliance each, and a sphere of 5 mm in
-// a seat of 10 mm (1/R = 1/5 - 1/10), have the same R and E*.
+// (1/R = 1/20 + 1/20) whose compliances 1/300 000 MPa^-1 add up to
+// 1/150 000, and a sphere of 5 mm in a seat of 10 mm (1/R = 1/5 - 1/10),
+// have the same R and E*.
 TEST(HertzSphere, FormulasAgainstHandComputation)
 {
-  const double pi = M_PI;
-  for (const auto &[R1, R2, c] : std::vector<std::array<double, 3>>{
-         {10, 0, 1 / 150000.}, {20, 20, 2 / 300000.}, {5, -10, 1 / 150000.}})
+  const double                             pi = M_PI;
+  const std::vector<std::array<double, 3>> cases{{{10, 0, 1 / 150000.}},
+                                                 {{20, 20, 2 / 300000.}},
+                                                 {{5, -10, 1 / 150000.}}};
+  for (const auto &[R1, R2, c] : cases)
     {
       const auto H = hertz_point_contact(160000, c, R1, R2);
       EXPECT_NEAR(H.radius, 2.0, 1e-12);
