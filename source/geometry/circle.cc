@@ -3,7 +3,6 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/geometry/circle.h>
-#include <dpana/geometry/disc.h>
 #include <dpana/parameters/list_syntax.h>
 
 #include <deal.II/base/patterns.h>
@@ -16,11 +15,9 @@ namespace dpana
   {
     template <int dim>
     Circle<dim>::Circle(const bool half)
-      : CurvedShape<dim>(half)
-      , radius(1.)
+      : Disc<dim>(half, /*whole=*/true)
       , patch_half_width(0.)
     {
-      Assert(dim == 2, dealii::ExcNotImplemented());
     }
 
 
@@ -30,17 +27,10 @@ namespace dpana
     void
     Circle<dim>::declare_parameters(dealii::ParameterHandler &prm)
     {
-      using dealii::Patterns::Double;
-      prm.declare_entry("Centre",
-                        internal::repeat("0", dim),
-                        dealii::Patterns::List(Double(), dim, dim),
-                        "Centre x, y (mm) of the circle.");
-      prm.declare_entry("Radius", "1", Double(0.), "Radius R (mm).");
-      ContactRefinement::declare_parameters(
-        prm, "the lowest point of the circle (Centre - R e_y)");
+      Disc<dim>::declare_parameters(prm);
       prm.declare_entry("Load patch half width",
                         "0",
-                        Double(0.),
+                        dealii::Patterns::Double(0.),
                         "Half width w (mm) of the boundary `load patch`: the "
                         "faces of the upper arc whose centres lie within w "
                         "of the vertical axis x = Centre_x (whole faces, so "
@@ -60,14 +50,9 @@ namespace dpana
     Circle<dim>::parse_parameters(dealii::ParameterHandler &prm,
                                   const std::string        &path)
     {
-      this->centre =
-        parameters::parse_point<dim>(prm.get("Centre"), path + " / Centre");
-      radius = prm.get_double("Radius");
-      if (!(radius > 0))
-        throw InputError(path + " / Radius: must be positive");
-      this->refinement.parse_parameters(prm, path);
+      Disc<dim>::parse_parameters(prm, path);
       patch_half_width = prm.get_double("Load patch half width");
-      if (!(patch_half_width < radius))
+      if (!(patch_half_width < this->radius))
         throw InputError(path +
                          " / Load patch half width: must be less than the "
                          "Radius");
@@ -100,15 +85,11 @@ namespace dpana
     std::string
     Circle<dim>::description() const
     {
-      using internal::format_number;
-      std::string s = "R = " + format_number(radius) + ", centre (" +
-                      format_number(this->centre[0]) + ", " +
-                      format_number(this->centre[1]) + ")" +
-                      this->refinement.description();
+      std::string s = Disc<dim>::description();
       if (patch_half_width > 0)
-        s += ", load patch half width " + format_number(patch_half_width) +
-             " (" + std::to_string(patch_refinement.n_refinements) +
-             " refinements)";
+        s += ", load patch half width " +
+             internal::format_number(patch_half_width) + " (" +
+             std::to_string(patch_refinement.n_refinements) + " refinements)";
       return s;
     }
 
@@ -116,36 +97,14 @@ namespace dpana
 
     // @sect3{Creating the mesh}
     template <int dim>
-    void
-    Circle<dim>::make_quadrilaterals(dealii::Triangulation<2> &quads) const
-    {
-      make_disc_quadrilaterals(quads,
-                               dealii::Point<2>(this->centre[0],
-                                                this->centre[1]),
-                               radius,
-                               this->quarter,
-                               /*whole=*/true);
-    }
-
-
-
-    template <int dim>
-    dealii::Point<2>
-    Circle<dim>::contact_point() const
-    {
-      return dealii::Point<2>(this->centre[0], this->centre[1] - radius);
-    }
-
-
-
-    template <int dim>
     std::vector<std::pair<dealii::Point<2>, ContactRefinement>>
     Circle<dim>::further_refinements() const
     {
       if (patch_refinement.n_refinements == 0)
         return {};
-      return {{dealii::Point<2>(this->centre[0], this->centre[1] + radius),
-               patch_refinement}};
+      return {
+        {dealii::Point<2>(this->centre[0], this->centre[1] + this->radius),
+         patch_refinement}};
     }
 
 
@@ -157,7 +116,7 @@ namespace dpana
     Circle<dim>::boundary_name(const dealii::Point<dim> &x) const
     {
       const dealii::Point<dim> &c   = this->centre;
-      const double              tol = 1e-8 * radius;
+      const double              tol = 1e-8 * this->radius;
       if (this->quarter && std::abs(x[0] - c[0]) < tol)
         return "axis";
       if (x[1] > c[1] && std::abs(x[0] - c[0]) < patch_half_width)

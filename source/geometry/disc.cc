@@ -116,12 +116,22 @@ namespace dpana
 
     template <int dim>
     Disc<dim>::Disc(const bool quarter)
+      : Disc(quarter, /*whole=*/false)
+    {
+    }
+
+
+
+    template <int dim>
+    Disc<dim>::Disc(const bool quarter, const bool whole)
       : CurvedShape<dim>(quarter)
+      , whole(whole)
       , radius(1.)
       , length(1.)
       , n_axial_subdivisions(4)
     {
       Assert(!quarter || dim == 2, dealii::ExcNotImplemented());
+      Assert(!whole || dim == 2, dealii::ExcNotImplemented());
     }
 
 
@@ -224,7 +234,7 @@ namespace dpana
                                                 this->centre[1]),
                                radius,
                                this->quarter,
-                               /*whole=*/false);
+                               whole);
     }
 
 

@@ -4,7 +4,7 @@
 #ifndef dpana_geometry_circle_h
 #define dpana_geometry_circle_h
 
-#include <dpana/geometry/curved_shape.h>
+#include <dpana/geometry/disc.h>
 
 #include <deal.II/base/point.h>
 
@@ -25,12 +25,13 @@ namespace dpana
      * x = Centre_x.
      *
      * A point force P on the diameter of a disc puts a singular stress
-     * field at the load point, which decays over the radius; at the far end
-     * of the diameter the body is loaded by the contact pressure only, and
-     * for a small a / R the pressure there is the Hertz pressure of a
-     * cylinder (Johnson, Contact Mechanics, 1985, sections 4.2 and 5.6):
-     * the load point lies 2R from the contact, where the Hertz field has
-     * decayed to an O(a^2 / R^2) correction.
+     * field at the load point, which decays over the radius (the disc
+     * compressed along a diameter: Timoshenko and Goodier, Theory of
+     * Elasticity, 1970); at the far end of the diameter, 2R away, the body
+     * is loaded by the contact pressure only, and the pressure there tends
+     * to the Hertz pressure of a cylinder as a / R -> 0 (Hertz theory takes
+     * each body near the contact as a half-space; Johnson, Contact
+     * Mechanics, 1985, chapter 4).
      *
      * The coarse mesh (make_disc_quadrilaterals()) has 12 quadrilaterals
      * (the half model 6): four squares of side R/2 around the centre and
@@ -38,13 +39,14 @@ namespace dpana
      * highest points of the circle are vertices. The quadrilaterals are
      * refined towards the contact point (Contact refinements) and towards
      * the load point (Load patch refinements, within w), then split into
-     * triangles by CurvedShape.
+     * triangles by CurvedShape. The class is the Disc of the whole circle
+     * (its centre, radius and contact refinements), with the load patch.
      *
      * Boundary names: the arc `curved` (id 1), the half model's edge on
      * x = Centre_x `axis` (2), and, if w > 0, `load patch` (3).
      */
     template <int dim>
-    class Circle : public CurvedShape<dim>
+    class Circle : public Disc<dim>
     {
     public:
       /**
@@ -53,8 +55,8 @@ namespace dpana
       explicit Circle(const bool half);
 
       /**
-       * Declares Centre, Radius, the contact refinement entries and the
-       * load patch entries.
+       * Declares the entries of the half disc (Disc) and the load patch
+       * entries.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -67,25 +69,14 @@ namespace dpana
       boundary_names() const override;
 
       /**
-       * "R = 40, centre (0, 40)", with the contact refinements and the load
-       * patch if any.
+       * That of the Disc, with the load patch if any.
        */
       std::string
       description() const override;
 
     private:
-      double            radius;
       double            patch_half_width;
       ContactRefinement patch_refinement;
-
-      void
-      make_quadrilaterals(dealii::Triangulation<2> &quads) const override;
-
-      /**
-       * The lowest point of the circle.
-       */
-      dealii::Point<2>
-      contact_point() const override;
 
       /**
        * The highest point of the circle, refined within the load patch half

@@ -84,7 +84,14 @@ namespace dpana
       std::string
       description() const override;
 
-    private:
+    protected:
+      /**
+       * The shape of Disc(quarter) and, with @p whole, its mirror image
+       * above the centre too (the circular body of Circle).
+       */
+      Disc(const bool quarter, const bool whole);
+
+      const bool   whole;
       double       radius;
       double       length;
       unsigned int n_axial_subdivisions;

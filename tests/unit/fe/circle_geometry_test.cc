@@ -141,7 +141,9 @@ TEST(CircleGeometry, ContactAndLoadPatchRefinements)
         const bool near_contact = face->center().distance({0, 0}) < 5;
         const bool near_load    = face->center().distance({0, 2 * R}) < w;
         if (near_contact || near_load)
-          EXPECT_NEAR(chord, fine_chord, 1e-9 * R);
+          {
+            EXPECT_NEAR(chord, fine_chord, 1e-9 * R);
+          }
         EXPECT_EQ(face->boundary_id() == patch,
                   face->center()[1] > R && face->center()[0] < w);
         if (face->boundary_id() == patch)
