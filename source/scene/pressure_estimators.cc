@@ -83,8 +83,13 @@ namespace dpana
         std::array<double, 3>                b{}, coef{};
         unsigned int                         n_pressed = 0;
         double                               extent    = 0;
+        // Pressed: above the round-off of the solver (separated elements
+        // carry |N| of that size), relative to the largest pressure.
+        double p_max = 0;
         for (const auto &e : elements)
-          if (e.pressure > 0)
+          p_max = std::max(p_max, e.pressure);
+        for (const auto &e : elements)
+          if (e.pressure > 1e-9 * p_max)
             {
               const double                x = 0.5 * (e.s_min + e.s_max) - s0;
               const double                w = e.s_max - e.s_min;

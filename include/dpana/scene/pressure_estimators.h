@@ -61,7 +61,8 @@ namespace dpana
      * - the elliptic fit: the least squares fit, weighted by the element
      *   lengths, of p^2 = A + B s + C s^2 (the elliptic law squared,
      *   p0^2 (1 - (s - c_f)^2 / a_f^2)) to the squared pressures of the
-     *   pressed elements, each taken at its centroid; then c_f = -B / 2C,
+     *   pressed elements (p above 1e-9 of the largest: the separated ones
+     *   carry round-off), each taken at its centroid; then c_f = -B / 2C,
      *   p0^2 = A - B^2 / 4C and a_f^2 = -p0^2 / C. With a mirrored half
      *   model B = 0. It needs 3 pressed elements (2 mirrored), C < 0, and
      *   a_f less than twice the extent of the pressed elements from s0
