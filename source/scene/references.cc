@@ -50,6 +50,37 @@ namespace dpana
           return radius_1 * (-radius_2) / (-radius_2 - radius_1);
         return radius_1;
       }
+
+
+
+      // Adds to the Hertz comparison @p c the errors of the estimates finer
+      // than an element (pressure_estimators.h) against the Hertz half
+      // width a_H and pressure N_H, to its values and its log line.
+      void
+      add_estimator_errors(Comparison           &c,
+                           const double          a_H,
+                           const double          N_H,
+                           const ContactSummary &summary)
+      {
+        const PressureEstimates &est = summary.estimates;
+        if (!est.available)
+          return;
+        std::ostringstream out;
+        out << std::setprecision(6) << std::showpos << "; a_m "
+            << relative(est.moment_half_width, a_H);
+        c.values.emplace_back("a_moment_error",
+                              relative(est.moment_half_width, a_H));
+        if (est.fit_available)
+          {
+            out << ", a_f " << relative(est.fit_half_width, a_H)
+                << ", p0 of the fit " << relative(est.fit_max_pressure, N_H);
+            c.values.emplace_back("a_fit_error",
+                                  relative(est.fit_half_width, a_H));
+            c.values.emplace_back("fit_max_pressure_error",
+                                  relative(est.fit_max_pressure, N_H));
+          }
+        c.text += out.str();
+      }
     } // namespace
 
 
@@ -305,6 +336,7 @@ namespace dpana
           {"a_centroid_error", relative(summary.half_width_centroid, a_H)},
           {"N_max_error", relative(N, N_H)}},
          ""}};
+      add_estimator_errors(c[0], a_H, N_H, summary);
       if (table_half_width > 0 || table_max_pressure > 0)
         {
           std::ostringstream t;
