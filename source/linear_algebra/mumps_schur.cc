@@ -60,6 +60,42 @@ namespace dpana
             PetscFinalize();
         });
       }
+
+
+
+      // MatSolve or MatMult of @p M with @p x, on Eigen's storage.
+      Eigen::VectorXd
+      apply(PetscErrorCode (*operation)(Mat, Vec, Vec),
+            const Mat              M,
+            const Eigen::VectorXd &x,
+            const char            *name)
+      {
+        Eigen::VectorXd y(x.size());
+        Vec             vx, vy;
+        check(
+          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, x.size(), x.data(), &vx),
+          "VecCreateSeqWithArray");
+        check(
+          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, y.size(), y.data(), &vy),
+          "VecCreateSeqWithArray");
+        const PetscErrorCode code = operation(M, vx, vy);
+        VecDestroy(&vx);
+        VecDestroy(&vy);
+        check(code, name);
+        return y;
+      }
+
+
+
+      // MUMPS' INFOG(i) of the factor @p F, -1 without a factor.
+      int
+      infog(const Mat F, const int i)
+      {
+        PetscInt value = -1;
+        if (F)
+          MatMumpsGetInfog(F, i, &value);
+        return value;
+      }
     } // namespace
 
 
@@ -136,24 +172,9 @@ namespace dpana
       const unsigned int               n_rows,
       const std::vector<unsigned int> &gamma_dofs)
     {
-      reduced_index.assign(n_rows, -1);
-      free.clear();
-      for (unsigned int i = 0; i < n_rows; ++i)
-        if (!constraints.is_constrained(i))
-          {
-            reduced_index[i] = free.size();
-            free.push_back(i);
-          }
-      std::vector<bool> in_gamma(free.size(), false);
-      for (const unsigned int i : gamma_dofs)
-        {
-          AssertIndexRange(i, n_rows);
-          if (reduced_index[i] >= 0)
-            in_gamma[reduced_index[i]] = true;
-          else
-            for (const auto &[j, a] : *constraints.get_constraint_entries(i))
-              in_gamma[reduced_index[j]] = true;
-        }
+      number_free_dofs(constraints, n_rows, free, reduced_index);
+      const std::vector<bool> in_gamma =
+        unknowns_of_dofs(gamma_dofs, constraints, reduced_index, free.size());
       gamma.clear();
       schur.clear();
       for (unsigned int k = 0; k < free.size(); ++k)
@@ -290,16 +311,7 @@ namespace dpana
     MumpsSchurFactorization::Impl::solve_interior(
       const Eigen::VectorXd &b) const
     {
-      Eigen::VectorXd y(b.size());
-      Vec             vb, vy;
-      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, b.size(), b.data(), &vb),
-            "VecCreateSeqWithArray");
-      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, y.size(), y.data(), &vy),
-            "VecCreateSeqWithArray");
-      const PetscErrorCode code = MatSolve(F, vb, vy);
-      VecDestroy(&vb);
-      VecDestroy(&vy);
-      check(code, "MatSolve");
+      Eigen::VectorXd y = apply(MatSolve, F, b, "MatSolve");
       for (const PetscInt k : gamma)
         y(k) = 0.0;
       return y;
@@ -310,17 +322,7 @@ namespace dpana
     Eigen::VectorXd
     MumpsSchurFactorization::Impl::multiply(const Eigen::VectorXd &x) const
     {
-      Eigen::VectorXd y(x.size());
-      Vec             vx, vy;
-      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, x.size(), x.data(), &vx),
-            "VecCreateSeqWithArray");
-      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, y.size(), y.data(), &vy),
-            "VecCreateSeqWithArray");
-      const PetscErrorCode code = MatMult(K, vx, vy);
-      VecDestroy(&vx);
-      VecDestroy(&vy);
-      check(code, "MatMult");
-      return y;
+      return apply(MatMult, K, x, "MatMult");
     }
 
 
@@ -479,10 +481,7 @@ namespace dpana
     int
     MumpsSchurFactorization::ordering() const
     {
-      PetscInt value = -1;
-      if (impl->F)
-        MatMumpsGetInfog(impl->F, 7, &value);
-      return value;
+      return infog(impl->F, 7);
     }
 
 
@@ -490,10 +489,7 @@ namespace dpana
     int
     MumpsSchurFactorization::factor_memory_mb() const
     {
-      PetscInt value = -1;
-      if (impl->F)
-        MatMumpsGetInfog(impl->F, 22, &value);
-      return value;
+      return infog(impl->F, 22);
     }
   } // namespace linear_algebra
 } // namespace dpana

@@ -8,6 +8,45 @@ namespace dpana
 {
   namespace linear_algebra
   {
+    void
+    number_free_dofs(const dealii::AffineConstraints<double> &constraints,
+                     const unsigned int                       n_dofs,
+                     std::vector<unsigned int>               &free,
+                     std::vector<int>                        &reduced_index)
+    {
+      reduced_index.assign(n_dofs, -1);
+      free.clear();
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        if (!constraints.is_constrained(i))
+          {
+            reduced_index[i] = free.size();
+            free.push_back(i);
+          }
+    }
+
+
+
+    std::vector<bool>
+    unknowns_of_dofs(const std::vector<unsigned int>         &dofs,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const std::vector<int>                  &reduced_index,
+                     const unsigned int                       n_free)
+    {
+      std::vector<bool> result(n_free, false);
+      for (const unsigned int i : dofs)
+        {
+          AssertIndexRange(i, reduced_index.size());
+          if (reduced_index[i] >= 0)
+            result[reduced_index[i]] = true;
+          else
+            for (const auto &[j, a] : *constraints.get_constraint_entries(i))
+              result[reduced_index[j]] = true;
+        }
+      return result;
+    }
+
+
+
     CholmodSchurFactorization::CholmodSchurFactorization(
       SparseCholesky &cholesky)
       : cholesky(cholesky)

@@ -103,6 +103,34 @@ namespace dpana
 
 
     /**
+     * The degrees of freedom of 0..@p n_dofs-1 that @p constraints leaves
+     * free, in increasing order (@p free), and for every degree of freedom
+     * its index among them, or -1 if it is constrained (@p reduced_index):
+     * the unknowns of the reduced matrix $K_r$.
+     */
+    void
+    number_free_dofs(const dealii::AffineConstraints<double> &constraints,
+                     const unsigned int                       n_dofs,
+                     std::vector<unsigned int>               &free,
+                     std::vector<int>                        &reduced_index);
+
+    /**
+     * The free unknowns that the degrees of freedom @p dofs stand for: for
+     * each of the @p n_free degrees of freedom that @p constraints leaves
+     * free (numbered by @p reduced_index: the index of a dof among the free
+     * ones, -1 for a constrained one), whether one of @p dofs is that dof
+     * or a constrained dof of which it is a master (a dof of a Dirichlet
+     * condition without masters stands for none).
+     */
+    std::vector<bool>
+    unknowns_of_dofs(const std::vector<unsigned int>         &dofs,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const std::vector<int>                  &reduced_index,
+                     const unsigned int                       n_free);
+
+
+
+    /**
      * The SchurFactorization of CHOLMOD: a SparseCholesky factored with the
      * unknowns of $\Gamma$ ordered last (SparseCholesky::
      * factorize_with_last()), whose last diagonal block is $L_S$. An
