@@ -3,8 +3,9 @@
 // ---------------------------------------------------------------------------
 //
 // Benchmark: the two routes of the condensation of a body on its candidate
-// contact surface, A = V_r^T K_r^{-1} V_r (condensation::Method), side by
-// side on the same assembled scene:
+// contact surface, A = V_r^T K_r^{-1} V_r (condensation::Method), and the
+// two back ends of the Schur route (condensation::Backend), side by side on
+// the same assembled scene:
 //
 //   - blocked solves: one sparse Cholesky factorisation with CHOLMOD's
 //     fill-reducing ordering, then Z = K_r^{-1} V_r by blocked forward and
@@ -12,7 +13,11 @@
 //   - schur: one factorisation with the surface dofs ordered last, then
 //     A = W^T W, W = L_22^{-1} V_Gamma (L_22 the factor of the Schur
 //     complement on Gamma_c): a dense triangular solve and a rank update of
-//     size n_Gamma x n_c.
+//     size n_Gamma x n_c;
+//   - mumps: the Schur route with MUMPS through PETSc: MUMPS eliminates the
+//     interior unknowns and returns the dense Schur complement S on the
+//     surface, factored by LAPACK (S = L_S L_S^T), then W = L_S^{-1}
+//     V_Gamma and A = W^T W as above.
 //
 // For each scene (a .prm file of prm/ with entries overridden, e.g. a finer
 // mesh) the bodies are assembled and the contact surface built once; then,
@@ -22,7 +27,8 @@
 // times and its peak resident memory (getrusage; it includes the assembled
 // scene it inherited, so it is the peak a run with that route would reach up
 // to the end of the condensation), and writes its A to a temporary file, so
-// that the A of the two routes are compared (|dA|, relative to max |A_ij|).
+// that the A of the routes are compared with that of the blocked solves
+// (|dA|, relative to max |A_ij|).
 //
 // Times are the minimum over --repeats runs of the factorisation and the
 // condensation in the same child (default 1).
@@ -93,8 +99,8 @@ namespace
     std::string  label;
     unsigned int body = 0, n_dofs = 0, n_contact = 0;
     double       setup_mb = 0;
-    Measurement  blocked, schur;
-    double       difference = 0;
+    Measurement  blocked, schur, mumps;
+    double       difference = 0, difference_mumps = 0;
   };
 
 
@@ -140,16 +146,16 @@ namespace
 
   // @sect3{One route in a child process}
   //
-  // The child condenses body b by the given method, writes its Measurement
+  // The child condenses body b by the given parameters, writes its Measurement
   // to the pipe and its A (rows, then the column-major values) to
   // @p a_file, and exits.
   template <int dim>
   Measurement
-  measure(scene::Scene<dim>         &s,
-          const unsigned int         b,
-          const condensation::Method method,
-          const unsigned int         repeats,
-          const std::string         &a_file)
+  measure(scene::Scene<dim>              &s,
+          const unsigned int              b,
+          const condensation::Parameters &parameters,
+          const unsigned int              repeats,
+          const std::string              &a_file)
   {
     int channel[2];
     AssertThrow(pipe(channel) == 0, dealii::ExcMessage("pipe() failed"));
@@ -159,8 +165,6 @@ namespace
     if (pid == 0)
       {
         close(channel[0]);
-        condensation::Parameters parameters;
-        parameters.method = method;
         Measurement m;
         for (unsigned int k = 0; k < repeats; ++k)
           {
@@ -177,7 +181,7 @@ namespace
                 m.t_factor   = t_factor;
                 m.t_condense = t_condense;
               }
-            m.n_gamma = c.factorization().schur_dofs().size();
+            m.n_gamma = c.schur_factorization().schur_dofs().size();
             if (k + 1 == repeats)
               {
                 const Eigen::MatrixXd &A = c.compliance();
@@ -241,18 +245,21 @@ namespace
         row.setup_mb = peak_memory_mb();
         const std::string file =
           "/tmp/condensation_benchmark_" + std::to_string(getpid());
-        row.blocked = measure(*s,
-                              b,
-                              condensation::Method::blocked_solves,
-                              repeats,
-                              file + "_blocked");
-        row.schur =
-          measure(*s, b, condensation::Method::schur, repeats, file + "_schur");
+        condensation::Parameters parameters;
+        parameters.method = condensation::Method::blocked_solves;
+        row.blocked = measure(*s, b, parameters, repeats, file + "_blocked");
+        parameters.method = condensation::Method::schur;
+        row.schur = measure(*s, b, parameters, repeats, file + "_schur");
+        parameters.backend = condensation::Backend::mumps;
+        row.mumps = measure(*s, b, parameters, repeats, file + "_mumps");
         const Eigen::MatrixXd A_blocked = read_matrix(file + "_blocked");
         const Eigen::MatrixXd A_schur   = read_matrix(file + "_schur");
-        row.n_contact                   = A_schur.rows();
-        row.difference = (A_schur - A_blocked).cwiseAbs().maxCoeff() /
-                         std::max(A_blocked.cwiseAbs().maxCoeff(), 1e-300);
+        const Eigen::MatrixXd A_mumps   = read_matrix(file + "_mumps");
+        const double scale = std::max(A_blocked.cwiseAbs().maxCoeff(), 1e-300);
+        row.n_contact      = A_schur.rows();
+        row.difference = (A_schur - A_blocked).cwiseAbs().maxCoeff() / scale;
+        row.difference_mumps =
+          (A_mumps - A_blocked).cwiseAbs().maxCoeff() / scale;
         rows.push_back(row);
       }
     return rows;
@@ -264,24 +271,18 @@ namespace
   void
   print_header()
   {
-    std::printf("%-26s %4s %8s %5s %6s %7s | %8s %8s %6s %7s | %8s %8s %6s "
-                "%7s | %7s\n",
+    const char *route = "%8s %8s %6s %7s | ";
+    std::printf("%-26s %4s %8s %5s %6s %7s | ",
                 "scene",
                 "body",
                 "n_dofs",
                 "n_c",
                 "n_G",
-                "setupMB",
-                "factor",
-                "condense",
-                "ratio",
-                "peakMB",
-                "factor",
-                "condense",
-                "ratio",
-                "peakMB",
-                "|dA|");
-    std::printf("%-26s %4s %8s %5s %6s %7s | %-33s | %-33s |\n",
+                "setupMB");
+    for (unsigned int k = 0; k < 3; ++k)
+      std::printf(route, "factor", "condense", "ratio", "peakMB");
+    std::printf("%7s %7s\n", "|dA|", "|dA|m");
+    std::printf("%-26s %4s %8s %5s %6s %7s | %-33s | %-33s | %-33s |\n",
                 "",
                 "",
                 "",
@@ -289,29 +290,27 @@ namespace
                 "",
                 "",
                 "blocked solves [s]",
-                "schur [s]");
+                "schur, cholmod [s]",
+                "schur, mumps [s]");
   }
 
   void
   print_row(const Row &r)
   {
-    std::printf("%-26s %4u %8u %5u %6u %7.0f | %8.3g %8.3g %6.2f %7.0f | "
-                "%8.3g %8.3g %6.2f %7.0f | %7.1e\n",
+    std::printf("%-26s %4u %8u %5u %6u %7.0f | ",
                 r.label.c_str(),
                 r.body,
                 r.n_dofs,
                 r.n_contact,
                 r.schur.n_gamma,
-                r.setup_mb,
-                r.blocked.t_factor,
-                r.blocked.t_condense,
-                r.blocked.t_condense / r.blocked.t_factor,
-                r.blocked.peak_mb,
-                r.schur.t_factor,
-                r.schur.t_condense,
-                r.schur.t_condense / r.schur.t_factor,
-                r.schur.peak_mb,
-                r.difference);
+                r.setup_mb);
+    for (const Measurement *m : {&r.blocked, &r.schur, &r.mumps})
+      std::printf("%8.3g %8.3g %6.2f %7.0f | ",
+                  m->t_factor,
+                  m->t_condense,
+                  m->t_condense / m->t_factor,
+                  m->peak_mb);
+    std::printf("%7.1e %7.1e\n", r.difference, r.difference_mumps);
     std::fflush(stdout);
   }
 
@@ -327,7 +326,8 @@ namespace
       }
     out << "scene,body,n_dofs,n_contact,n_gamma,setup_mb,"
            "blocked_factor,blocked_condense,blocked_peak_mb,"
-           "schur_factor,schur_condense,schur_peak_mb,difference\n";
+           "schur_factor,schur_condense,schur_peak_mb,difference,"
+           "mumps_factor,mumps_condense,mumps_peak_mb,mumps_difference\n";
     out.precision(6);
     for (const Row &r : rows)
       out << r.label << ',' << r.body << ',' << r.n_dofs << ',' << r.n_contact
@@ -335,7 +335,8 @@ namespace
           << r.blocked.t_factor << ',' << r.blocked.t_condense << ','
           << r.blocked.peak_mb << ',' << r.schur.t_factor << ','
           << r.schur.t_condense << ',' << r.schur.peak_mb << ',' << r.difference
-          << '\n';
+          << ',' << r.mumps.t_factor << ',' << r.mumps.t_condense << ','
+          << r.mumps.peak_mb << ',' << r.difference_mumps << '\n';
   }
 
 
@@ -410,7 +411,8 @@ main(int argc, char **argv)
       std::vector<Row> rows;
       const auto       start = std::chrono::steady_clock::now();
       std::printf("Condensation by blocked solves and through the Schur "
-                  "complement, side by side (times in s, memory in MB)\n");
+                  "complement (CHOLMOD, MUMPS), side by side (times in s, "
+                  "memory in MB)\n");
       print_header();
       for (const Case &c : cases(mode, prm_dir))
         {
@@ -428,7 +430,8 @@ main(int argc, char **argv)
       std::printf("ratio = condense / factor of the same route; peakMB = peak "
                   "resident memory of the process that assembled the scene "
                   "and ran the route (setupMB: before the routes); |dA| = max "
-                  "|A_schur - A_blocked| / max |A_ij|\n"
+                  "|A_schur - A_blocked| / max |A_ij|, |dA|m the same for "
+                  "A_mumps\n"
                   "total wall time %.1f s; csv: %s\n",
                   seconds_since(start),
                   csv.c_str());

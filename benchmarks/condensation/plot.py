@@ -3,7 +3,8 @@
 
 One panel per scene (the 3D receding block, the 2D Hertz cylinder): wall
 time against the number of degrees of freedom, log-log, of the factorisation
-and of the condensation of both routes (blocked solves, Schur complement).
+and of the condensation of both routes (blocked solves, Schur complement) and
+of the Schur route with MUMPS as its factorisation (if the CSV has it).
 The number of contact unknowns is written next to each point of the Schur
 condensation.
 
@@ -22,6 +23,8 @@ SERIES = [
     ("blocked_condense", "condensation, blocked solves", "tab:red", "v", "-"),
     ("schur_factor", "factorisation (Gamma_c last)", "tab:green", "s", "--"),
     ("schur_condense", "condensation, Schur", "tab:blue", "o", "--"),
+    ("mumps_factor", "factorisation (MUMPS, Schur)", "tab:purple", "D", ":"),
+    ("mumps_condense", "condensation, Schur (MUMPS)", "tab:orange", "^", ":"),
 ]
 
 
@@ -39,6 +42,8 @@ def main():
                       key=lambda r: int(r["n_dofs"]))
         n = [int(r["n_dofs"]) for r in part]
         for key, label, color, marker, style in SERIES:
+            if key not in part[0]:
+                continue
             ax.loglog(n, [float(r[key]) for r in part], marker=marker,
                       color=color, linestyle=style, label=label)
         for r in part:

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/condensation/condenser.h>
+#include <dpana/linear_algebra/mumps_schur.h>
 
 #include <Eigen/QR>
 
@@ -128,18 +129,23 @@ namespace dpana
         constraints.add_line(s);
       constraints.close();
 
+      // The back end of the Schur route; the blocked solves factor with
+      // CHOLMOD alone (no dofs ordered last).
+      std::vector<unsigned int> gamma;
+      if (parameters.method == Method::schur)
+        {
+          if (V.rows() == 0)
+            assemble_coupling();
+          gamma = surface_dofs();
+        }
+      if (parameters.backend == Backend::mumps)
+        back_end = std::make_unique<linear_algebra::MumpsSchurFactorization>();
+      else
+        back_end =
+          std::make_unique<linear_algebra::CholmodSchurFactorization>(cholesky);
       try
         {
-          if (parameters.method == Method::schur)
-            {
-              if (V.rows() == 0)
-                assemble_coupling();
-              cholesky.factorize_with_last(body.system_matrix(),
-                                           constraints,
-                                           surface_dofs());
-            }
-          else
-            cholesky.factorize(body.system_matrix(), constraints);
+          back_end->factorize(body.system_matrix(), constraints, gamma);
         }
       catch (const linear_algebra::NotPositiveDefiniteError &)
         {
@@ -151,12 +157,10 @@ namespace dpana
 
       // u_o: the rows of the body's right-hand side at the (remaining) free
       // degrees of freedom already hold M^T (f - K u_bar).
-      const auto     &rhs = body.system_rhs();
-      const auto     &fr  = cholesky.free_dofs();
-      Eigen::MatrixXd b_r(fr.size(), 1);
-      for (unsigned int k = 0; k < fr.size(); ++k)
-        b_r(k, 0) = rhs[fr[k]];
-      u_o = cholesky.extend(cholesky.solve_reduced(b_r), false).col(0);
+      const auto            &rhs = body.system_rhs();
+      dealii::Vector<double> u;
+      back_end->solve_condensed(rhs, u);
+      u_o = Eigen::Map<const Eigen::VectorXd>(u.begin(), u.size());
 
       // e = -R^T f_r over the free degrees of freedom of the body's own
       // constraints (the rows of R there are the reduced rigid motions).
@@ -188,7 +192,7 @@ namespace dpana
     void
     Condenser<dim>::condense(const unsigned int columns_per_pass)
     {
-      Assert(cholesky.is_factorized(), dealii::ExcInternalError());
+      Assert(back_end != nullptr, dealii::ExcInternalError());
       if (parameters.method == Method::schur)
         condense_through_schur_complement();
       else
@@ -209,7 +213,7 @@ namespace dpana
     void
     Condenser<dim>::condense_through_schur_complement()
     {
-      const auto &dofs = cholesky.schur_dofs();
+      const auto &dofs = back_end->schur_dofs();
       A.setZero(V.cols(), V.cols());
       relative_asymmetry = 0.0;
       if (dofs.empty())
@@ -227,7 +231,7 @@ namespace dpana
                  *constraints.get_constraint_entries(it.row()))
               W(position[j], c) += a * it.value();
 
-      cholesky.solve_schur_factor(W);
+      back_end->solve_schur_factor(W);
       A.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
       A = A.selfadjointView<Eigen::Lower>();
     }
@@ -261,7 +265,7 @@ namespace dpana
     Condenser<dim>::recover(const Eigen::VectorXd &r,
                             const Eigen::VectorXd &alpha) const
     {
-      Eigen::VectorXd u = u_o + cholesky.solve(Eigen::VectorXd(V * r));
+      Eigen::VectorXd u = u_o + back_end->solve(Eigen::VectorXd(V * r));
       if (R.cols() > 0)
         u += R * alpha;
       dealii::Vector<double> result(u.size());

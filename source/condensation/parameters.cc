@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
+#include <dpana/base/exceptions.h>
 #include <dpana/condensation/parameters.h>
 
 #include <deal.II/base/patterns.h>
@@ -20,6 +21,14 @@ namespace dpana
                         "contact surface (the surface dofs ordered last in "
                         "the factorisation), 'blocked solves' by solving for "
                         "the columns of V.");
+      prm.declare_entry("Factorisation back end",
+                        "cholmod",
+                        dealii::Patterns::Selection("cholmod|mumps"),
+                        "The sparse factorisation behind Condensation "
+                        "method = schur: 'cholmod' (CHOLMOD's supernodal "
+                        "Cholesky, the surface dofs ordered last) or 'mumps' "
+                        "(MUMPS' Schur complement on the surface dofs, "
+                        "through PETSc). The blocked solves use CHOLMOD.");
       prm.declare_entry("Columns per solve",
                         "256",
                         dealii::Patterns::Integer(1),
@@ -33,10 +42,15 @@ namespace dpana
     void
     Parameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      method            = prm.get("Condensation method") == "schur" ?
-                            Method::schur :
-                            Method::blocked_solves;
+      method  = prm.get("Condensation method") == "schur" ?
+                  Method::schur :
+                  Method::blocked_solves;
+      backend = prm.get("Factorisation back end") == "mumps" ? Backend::mumps :
+                                                               Backend::cholmod;
       columns_per_solve = prm.get_integer("Columns per solve");
+      if (backend == Backend::mumps && method != Method::schur)
+        throw InputError("Contact / Factorisation back end = mumps needs "
+                         "Contact / Condensation method = schur");
     }
   } // namespace condensation
 } // namespace dpana

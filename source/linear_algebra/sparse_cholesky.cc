@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
+#include <dpana/linear_algebra/schur_factorization.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
 #include <Eigen/CholmodSupport>
@@ -168,14 +169,7 @@ namespace dpana
 
       // Number the free degrees of freedom consecutively and copy the
       // constraint lines.
-      reduced_index.assign(n_rows, -1);
-      free.clear();
-      for (unsigned int i = 0; i < n_rows; ++i)
-        if (!constraints.is_constrained(i))
-          {
-            reduced_index[i] = free.size();
-            free.push_back(i);
-          }
+      number_free_dofs(constraints, n_rows, free, reduced_index);
       lines.clear();
       for (const auto &line : constraints.get_lines())
         {
@@ -257,16 +251,8 @@ namespace dpana
       const std::vector<unsigned int>         &last_dofs)
     {
       const Eigen::SparseMatrix<double> K_lower = reduce(K, constraints);
-      std::vector<bool>                 is_last(free.size(), false);
-      for (const unsigned int i : last_dofs)
-        {
-          AssertIndexRange(i, n_rows);
-          if (reduced_index[i] >= 0)
-            is_last[reduced_index[i]] = true;
-          else
-            for (const auto &[j, a] : *constraints.get_constraint_entries(i))
-              is_last[reduced_index[j]] = true;
-        }
+      const std::vector<bool>           is_last =
+        unknowns_of_dofs(last_dofs, constraints, reduced_index, free.size());
       last.clear();
       for (unsigned int k = 0; k < free.size(); ++k)
         if (is_last[k])

@@ -7,6 +7,7 @@
 #include <dpana/body/body.h>
 #include <dpana/condensation/parameters.h>
 #include <dpana/contact_surface/contact_surface.h>
+#include <dpana/linear_algebra/schur_factorization.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
 #include <deal.II/lac/affine_constraints.h>
@@ -15,6 +16,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,6 +71,12 @@ namespace dpana
      *   symmetric rank update, dense work of size n_Gamma x n_c after the
      *   one factorisation (SparseCholesky::factorize_with_last()); no dense
      *   block of length n_dofs. A is symmetric by construction.
+     *   The factorisation is a linear_algebra::SchurFactorization chosen by
+     *   Parameters::backend: CHOLMOD with Gamma_c ordered last (its L_22 is
+     *   the factor of the Schur complement S), or MUMPS through PETSc, which
+     *   returns S itself, factored densely (S = L_S L_S^T, L_S in place of
+     *   L_22). The load u_o and the recovery are solves with the same
+     *   factorisation.
      *
      * - <b>Blocked solves</b> (Method::blocked_solves). Z is computed by
      *   blocked multi-right-hand-side solves with one sparse Cholesky
@@ -188,10 +196,24 @@ namespace dpana
       {
         return supports;
       }
+      /**
+       * The CHOLMOD factorisation of the blocked solves and of the Schur
+       * route with Backend::cholmod (not factored with Backend::mumps).
+       */
       const linear_algebra::SparseCholesky &
       factorization() const
       {
         return cholesky;
+      }
+
+      /**
+       * The factorisation behind the load, the recovery and the Schur route,
+       * of the back end of the parameters; available after factorize().
+       */
+      const linear_algebra::SchurFactorization &
+      schur_factorization() const
+      {
+        return *back_end;
       }
 
     private:
@@ -223,6 +245,10 @@ namespace dpana
       dealii::AffineConstraints<double> constraints;
       linear_algebra::SparseCholesky    cholesky;
       Eigen::VectorXd                   u_o;
+
+      // The factorisation of the load, the recovery and the Schur route: an
+      // adapter of #cholesky, or MUMPS.
+      std::unique_ptr<linear_algebra::SchurFactorization> back_end;
 
       Eigen::MatrixXd A;
       Eigen::VectorXd s_o;

@@ -23,6 +23,18 @@ namespace dpana
     };
 
     /**
+     * The factorisation of the reduced stiffness matrix behind the Schur
+     * route (linear_algebra::SchurFactorization): CHOLMOD's supernodal
+     * Cholesky with the surface unknowns ordered last, or MUMPS' Schur
+     * complement through PETSc. The blocked solves always use CHOLMOD.
+     */
+    enum class Backend
+    {
+      cholmod,
+      mumps
+    };
+
+    /**
      * The parameters of the condensation: the Method, and, for the blocked
      * solves, how many columns of the coupling operator V are handed at once
      * to the sparse Cholesky solves of Condenser::condense(). Neither changes
@@ -32,28 +44,33 @@ namespace dpana
      * surface). In a parameter file they are the entries
      *
      *     subsection Contact
-     *       set Condensation method = schur
-     *       set Columns per solve   = 256
+     *       set Condensation method    = schur
+     *       set Factorisation back end = cholmod
+     *       set Columns per solve      = 256
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
-     * the subsection the caller has entered (`Contact`).
+     * the subsection the caller has entered (`Contact`). The back end
+     * (Backend) changes only the factorisation of the Schur route;
+     * `mumps` with `blocked solves` is an input error.
      */
     struct Parameters
     {
       Method       method            = Method::schur;
+      Backend      backend           = Backend::cholmod;
       unsigned int columns_per_solve = 256;
 
       /**
-       * Declare the entries Condensation method and Columns per solve in the
-       * current subsection of @p prm.
+       * Declare the entries Condensation method, Factorisation back end and
+       * Columns per solve in the current subsection of @p prm.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
-       * Read the entries Condensation method and Columns per solve from the
-       * current subsection of @p prm.
+       * Read the entries Condensation method, Factorisation back end and
+       * Columns per solve from the current subsection of @p prm. Throws an
+       * InputError for the back end mumps with the blocked solves.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);

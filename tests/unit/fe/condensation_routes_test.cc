@@ -3,10 +3,12 @@
 // ---------------------------------------------------------------------------
 //
 // The two routes of the condensation, through the Schur complement on the
-// contact surface and by blocked solves, against each other.
+// contact surface and by blocked solves, against each other; and the two
+// back ends of the Schur route, CHOLMOD and MUMPS, against each other.
 
 #include <dpana/condensation/condenser.h>
 #include <dpana/condensation/parameters.h>
+#include <dpana/linear_algebra/mumps_schur.h>
 #include <dpana/scene/scene.h>
 
 #include <memory>
@@ -22,15 +24,18 @@ namespace
   using dpana::test::make_scene;
 
   // Body b of an assembled scene with a contact surface, condensed anew by
-  // the given method.
+  // the given method and back end.
   template <int dim>
   std::unique_ptr<condensation::Condenser<dim>>
-  condensed(scene::Scene<dim>         &s,
-            const unsigned int         b,
-            const condensation::Method method)
+  condensed(
+    scene::Scene<dim>          &s,
+    const unsigned int          b,
+    const condensation::Method  method,
+    const condensation::Backend backend = condensation::Backend::cholmod)
   {
     condensation::Parameters parameters;
-    parameters.method = method;
+    parameters.method  = method;
+    parameters.backend = backend;
     auto c = std::make_unique<condensation::Condenser<dim>>(s.body(b),
                                                             s.surface(b),
                                                             parameters);
@@ -42,35 +47,41 @@ namespace
 
 
 
-  // The Schur route (the surface dofs ordered last, A = W^T W with W the
-  // solve with the factor of the Schur complement) and the blocked solves
-  // give the same A, s_o, G and e up to round-off (1e-12 relative), for every
-  // body of the scene, and the same recovered displacement.
+  using condensation::Backend;
+  using condensation::Method;
+
+  // A Schur route (the surface dofs ordered last, A = W^T W with W the
+  // solve with the factor of the Schur complement), by the back end
+  // @p backend, and a second condensation (@p other_method by
+  // @p other_backend) give the same A, s_o, G and e up to round-off (1e-12
+  // relative), for every body of the scene, and the same recovered
+  // displacement.
   template <int dim>
   void
-  expect_routes_agree(scene::Scene<dim> &s)
+  expect_condensations_agree(scene::Scene<dim> &s,
+                             const Backend      backend,
+                             const Method       other_method,
+                             const Backend      other_backend)
   {
     s.assemble();
     s.build_contact_surface();
     for (unsigned int b = 0; b < s.n_bodies(); ++b)
       {
-        const auto schur = condensed(s, b, condensation::Method::schur);
-        const auto blocked =
-          condensed(s, b, condensation::Method::blocked_solves);
+        const auto schur    = condensed(s, b, Method::schur, backend);
+        const auto other    = condensed(s, b, other_method, other_backend);
         const auto relative = [](const auto &x, const auto &y) {
           return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
         };
-        EXPECT_LT(relative(schur->compliance(), blocked->compliance()), 1e-12);
-        EXPECT_LT(relative(schur->load_term(), blocked->load_term()), 1e-12);
+        EXPECT_LT(relative(schur->compliance(), other->compliance()), 1e-12);
+        EXPECT_LT(relative(schur->load_term(), other->load_term()), 1e-12);
         EXPECT_LT(relative(schur->equilibrium_matrix(),
-                           blocked->equilibrium_matrix()),
+                           other->equilibrium_matrix()),
                   1e-12);
-        EXPECT_LT(relative(schur->equilibrium_rhs(),
-                           blocked->equilibrium_rhs()),
+        EXPECT_LT(relative(schur->equilibrium_rhs(), other->equilibrium_rhs()),
                   1e-12);
-        EXPECT_EQ(schur->fictitious_supports(), blocked->fictitious_supports());
+        EXPECT_EQ(schur->fictitious_supports(), other->fictitious_supports());
         EXPECT_EQ(schur->asymmetry(), 0.0);
-        EXPECT_GT(schur->factorization().schur_dofs().size(), 0u);
+        EXPECT_GT(schur->schur_factorization().schur_dofs().size(), 0u);
         EXPECT_TRUE(schur->compliance() == schur->compliance().transpose());
 
         const Eigen::VectorXd r =
@@ -78,73 +89,212 @@ namespace
         const Eigen::VectorXd alpha =
           Eigen::VectorXd::Ones(schur->n_free_modes());
         const auto u1 = schur->recover(r, alpha);
-        auto       u2 = blocked->recover(r, alpha);
+        auto       u2 = other->recover(r, alpha);
         u2 -= u1;
         EXPECT_LT(u2.l2_norm(), 1e-12 * u1.l2_norm());
       }
+  }
+
+  // The Schur route of CHOLMOD against the blocked solves.
+  template <int dim>
+  void
+  expect_routes_agree(scene::Scene<dim> &s)
+  {
+    expect_condensations_agree(s,
+                               Backend::cholmod,
+                               Method::blocked_solves,
+                               Backend::cholmod);
+  }
+
+  // The Schur route of MUMPS against that of CHOLMOD.
+  template <int dim>
+  void
+  expect_back_ends_agree(scene::Scene<dim> &s)
+  {
+    expect_condensations_agree(s,
+                               Backend::mumps,
+                               Method::schur,
+                               Backend::cholmod);
+  }
+
+
+
+  // The 2D receding block: held only by its symmetry plane, floating along
+  // the contact direction (one fictitious support).
+  std::unique_ptr<scene::Scene<2>>
+  floating_block_2d()
+  {
+    return make_scene<2>(dpana::test::receding_block(8, 8, "") +
+                         "subsection Contact\n"
+                         "  set Boundary 1 = bottom\n"
+                         "  set Contact direction = 0, -1\n"
+                         "end\n");
+  }
+
+  // The Hertz cylinder (locally refined: hanging nodes on the surface,
+  // floating along its axis) on a floating foundation.
+  std::unique_ptr<scene::Scene<2>>
+  two_floating_bodies_2d()
+  {
+    const std::string foundation = dpana::test::floating_foundation();
+    return make_scene<2>(hertz_prm(2, 15, 0.3, foundation), 2);
+  }
+
+  // A 3D block floating along the contact direction (symmetry planes only),
+  // alone or on a held 3D foundation.
+  std::unique_ptr<scene::Scene<3>>
+  block_3d(const bool with_foundation)
+  {
+    using dpana::test::brick_body;
+    const std::string block =
+      brick_body("Body 1",
+                 "box",
+                 "0, 0, 0",
+                 "40, 20, 20",
+                 "8, 4, 4",
+                 "    set Symmetry = left, front\n",
+                 "    set Pressure = top: 50; right: 100\n");
+    const std::string contact = "subsection Contact\n"
+                                "  set Boundary 1 = bottom\n"
+                                "  set Contact direction = 0, -1, 0\n";
+    if (!with_foundation)
+      return make_scene<3>("set Dimension = 3\n" + block + contact + "end\n");
+    const std::string foundation =
+      brick_body("Body 2",
+                 "box",
+                 "0, -20, 0",
+                 "40, 0, 20",
+                 "8, 4, 4",
+                 "    set Symmetry = left, front\n    set Fixed = bottom: y\n",
+                 "");
+    return make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" +
+                           block + foundation + contact +
+                           "  set Boundary 2 = top\nend\n",
+                         2);
   }
 } // namespace
 
 
 
-// The 2D receding block: held only by its symmetry plane, floating along
-// the contact direction (one fictitious support).
 TEST(Condensation, SchurRouteEqualsBlockedSolves2DFloatingBody)
 {
-  auto s = make_scene<2>(dpana::test::receding_block(8, 8, "") +
-                         "subsection Contact\n"
-                         "  set Boundary 1 = bottom\n"
-                         "  set Contact direction = 0, -1\n"
-                         "end\n");
-  expect_routes_agree(*s);
+  expect_routes_agree(*floating_block_2d());
 }
 
 
 
-// The Hertz cylinder (locally refined: hanging nodes on the surface,
-// floating along its axis) on a floating foundation.
 TEST(Condensation, SchurRouteEqualsBlockedSolves2DTwoFloatingBodies)
 {
-  const std::string foundation = dpana::test::floating_foundation();
-  auto              s = make_scene<2>(hertz_prm(2, 15, 0.3, foundation), 2);
-  expect_routes_agree(*s);
+  expect_routes_agree(*two_floating_bodies_2d());
 }
 
 
 
-// A 3D block floating along the contact direction (symmetry planes only) on
-// a held 3D foundation; and the block alone.
 TEST(Condensation, SchurRouteEqualsBlockedSolves3D)
 {
-  using dpana::test::brick_body;
-  const std::string block =
-    brick_body("Body 1",
-               "box",
-               "0, 0, 0",
-               "40, 20, 20",
-               "8, 4, 4",
-               "    set Symmetry = left, front\n",
-               "    set Pressure = top: 50; right: 100\n");
-  const std::string foundation =
-    brick_body("Body 2",
-               "box",
-               "0, -20, 0",
-               "40, 0, 20",
-               "8, 4, 4",
-               "    set Symmetry = left, front\n    set Fixed = bottom: y\n",
-               "");
-  const std::string contact = "subsection Contact\n"
-                              "  set Boundary 1 = bottom\n"
-                              "  set Contact direction = 0, -1, 0\n";
-  auto one = make_scene<3>("set Dimension = 3\n" + block + contact + "end\n");
-  expect_routes_agree(*one);
-  auto two =
-    make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" + block +
-                    foundation + contact + "  set Boundary 2 = top\nend\n",
-                  2);
+  expect_routes_agree(*block_3d(false));
+  auto two = block_3d(true);
   expect_routes_agree(*two);
-  EXPECT_EQ(condensed(*two, 0, condensation::Method::schur)->n_free_modes(),
-            1u);
-  EXPECT_EQ(condensed(*two, 1, condensation::Method::schur)->n_free_modes(),
-            0u);
+  EXPECT_EQ(condensed(*two, 0, Method::schur)->n_free_modes(), 1u);
+  EXPECT_EQ(condensed(*two, 1, Method::schur)->n_free_modes(), 0u);
+}
+
+
+
+TEST(Condensation, MumpsSchurEqualsCholmodSchur2DFloatingBody)
+{
+  expect_back_ends_agree(*floating_block_2d());
+}
+
+
+
+TEST(Condensation, MumpsSchurEqualsCholmodSchur2DTwoFloatingBodies)
+{
+  expect_back_ends_agree(*two_floating_bodies_2d());
+}
+
+
+
+TEST(Condensation, MumpsSchurEqualsCholmodSchur3D)
+{
+  expect_back_ends_agree(*block_3d(false));
+  expect_back_ends_agree(*block_3d(true));
+}
+
+
+
+// The Schur complement itself: S = L_S L_S^T of MUMPS (L_S the dense
+// Cholesky factor of the S that MUMPS returns) equals L_22 L_22^T of CHOLMOD
+// (the last block of its factor, checked against a dense Schur complement
+// in the tests of SparseCholesky), row by row of the same dofs; and the
+// solves of the recovery (homogeneous constraints) and of the load (with the
+// inhomogeneities) of the two back ends agree. On the
+// Hertz cylinder (hanging nodes on the surface) and the 3D block on its
+// foundation.
+TEST(Condensation, MumpsSchurComplementEqualsCholmodLastBlock)
+{
+  const auto check = [](auto &s) {
+    s.assemble();
+    s.build_contact_surface();
+    for (unsigned int b = 0; b < s.n_bodies(); ++b)
+      {
+        const auto  mumps   = condensed(s, b, Method::schur, Backend::mumps);
+        const auto  cholmod = condensed(s, b, Method::schur, Backend::cholmod);
+        const auto &factor =
+          dynamic_cast<const linear_algebra::MumpsSchurFactorization &>(
+            mumps->schur_factorization());
+        const auto &dofs_m = factor.schur_dofs();
+        const auto &dofs_c = cholmod->factorization().schur_dofs();
+        ASSERT_EQ(dofs_m.size(), dofs_c.size());
+        std::vector<int> position(s.body(b).dof_handler().n_dofs(), -1);
+        for (unsigned int k = 0; k < dofs_m.size(); ++k)
+          position[dofs_m[k]] = k;
+        Eigen::PermutationMatrix<Eigen::Dynamic> P(dofs_c.size());
+        for (unsigned int k = 0; k < dofs_c.size(); ++k)
+          {
+            ASSERT_GE(position[dofs_c[k]], 0);
+            P.indices()(k) = position[dofs_c[k]];
+          }
+        const Eigen::MatrixXd  L22 = cholmod->factorization().schur_factor();
+        const Eigen::MatrixXd  S_c = P * L22 * L22.transpose() * P.transpose();
+        const Eigen::MatrixXd &L_S = factor.schur_factor();
+        const Eigen::MatrixXd  S_m = L_S * L_S.transpose();
+        EXPECT_LT((S_m - S_c).norm(), 1e-12 * S_c.norm());
+
+        const unsigned int    n   = s.body(b).dof_handler().n_dofs();
+        const Eigen::VectorXd f   = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+        const Eigen::VectorXd u_m = factor.solve(f);
+        const Eigen::VectorXd u_c = cholmod->schur_factorization().solve(f);
+        EXPECT_LT((u_m - u_c).norm(), 1e-12 * u_c.norm());
+        dealii::Vector<double> f_condensed(f.data(), f.data() + n), v_m, v_c;
+        factor.solve_condensed(f_condensed, v_m);
+        cholmod->factorization().solve_condensed(f_condensed, v_c);
+        v_m -= v_c;
+        EXPECT_LT(v_m.l2_norm(), 1e-12 * v_c.l2_norm());
+      }
+  };
+  check(*two_floating_bodies_2d());
+  check(*block_3d(true));
+}
+
+
+
+// MUMPS factors a symmetric positive definite matrix without pivoting and
+// only counts the negative pivots: the back end refuses a matrix with any
+// (here the negated stiffness of the held 3D foundation) with
+// NotPositiveDefiniteError, as CHOLMOD does.
+TEST(Condensation, MumpsRefusesAMatrixThatIsNotPositiveDefinite)
+{
+  auto s = block_3d(true);
+  s->assemble();
+  const auto                  &body = s->body(1);
+  dealii::SparseMatrix<double> K(body.system_matrix().get_sparsity_pattern());
+  K.copy_from(body.system_matrix());
+  K *= -1.0;
+  linear_algebra::MumpsSchurFactorization factor;
+  EXPECT_THROW(factor.factorize(K, body.constraints(), {}),
+               linear_algebra::NotPositiveDefiniteError);
+  EXPECT_NO_THROW(
+    factor.factorize(body.system_matrix(), body.constraints(), {}));
+  EXPECT_TRUE(factor.schur_dofs().empty());
 }

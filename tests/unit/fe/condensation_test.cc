@@ -5,6 +5,7 @@
 // Tests of the condensation on the candidate contact surface and of whole
 // contact runs against exact or independent results.
 
+#include <dpana/base/exceptions.h>
 #include <dpana/body/body.h>
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/condensation/parameters.h>
@@ -281,6 +282,12 @@ TEST(Condensation, ColumnsPerSolveParameter)
   prm.set("Condensation method", "blocked solves");
   parameters.parse_parameters(prm);
   EXPECT_EQ(parameters.method, condensation::Method::blocked_solves);
+  EXPECT_EQ(parameters.backend, condensation::Backend::cholmod);
+  prm.set("Factorisation back end", "mumps");
+  EXPECT_THROW(parameters.parse_parameters(prm), InputError);
+  prm.set("Condensation method", "schur");
+  parameters.parse_parameters(prm);
+  EXPECT_EQ(parameters.backend, condensation::Backend::mumps);
   prm.leave_subsection();
 }
 

@@ -1,0 +1,121 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_linear_algebra_mumps_schur_h
+#define dpana_linear_algebra_mumps_schur_h
+
+#include <dpana/linear_algebra/schur_factorization.h>
+
+#include <memory>
+
+namespace dpana
+{
+  namespace linear_algebra
+  {
+    /**
+     * The SchurFactorization of MUMPS (the multifrontal solver of Amestoy,
+     * Duff, L'Excellent and Koster, SIAM J. Matrix Anal. Appl. 23, 2001),
+     * reached through PETSc.
+     *
+     * <h3>Factorisation</h3>
+     *
+     * The upper triangle of the reduced matrix $K_r$ (see SparseCholesky for
+     * the reduction by the constraints) is handed to PETSc as a sequential
+     * symmetric matrix (MATSEQSBAIJ, marked positive definite) and factored
+     * by MUMPS' $LL^T$ (MatGetFactor with MATSOLVERMUMPS,
+     * MAT_FACTOR_CHOLESKY) with the unknowns of $\Gamma$ as the Schur
+     * index set (MatFactorSetSchurIS, MUMPS' ICNTL(19)): MUMPS eliminates
+     * the interior unknowns $I$ with its own fill-reducing ordering and
+     * returns the dense Schur complement
+     * $S = K_{\Gamma\Gamma} - K_{\Gamma I} K_{II}^{-1} K_{I\Gamma}$.
+     * Its dense Cholesky factor $S = L_S L_S^T$ (LAPACK potrf) then serves
+     * solve_schur_factor() (LAPACK trtrs).
+     *
+     * <h3>Solves</h3>
+     *
+     * The factor of MUMPS covers $K_{II}$ only: a solve with it (MatSolve,
+     * MUMPS' ICNTL(26) = 0) returns $K_{II}^{-1} b_I$ and zero on $\Gamma$.
+     * A solve with $K_r$ is composed of two of them and one with $S$:
+     * @f[
+     *   x_\Gamma = S^{-1}\left(b_\Gamma - K_{\Gamma I} K_{II}^{-1} b_I\right),
+     *   \qquad
+     *   x_I = K_{II}^{-1}\left(b_I - K_{I\Gamma} x_\Gamma\right),
+     * @f]
+     * the products with the off-diagonal blocks taken as products with
+     * $K_r$ of vectors that vanish on $\Gamma$ or on $I$. solve() and
+     * solve_condensed() fold and extend by the constraints as the
+     * corresponding functions of SparseCholesky do, through the
+     * AffineConstraints themselves (condense() and distribute()).
+     *
+     * <h3>PETSc</h3>
+     *
+     * PETSc must be initialised before the first factorize(): deal.II's
+     * Utilities::MPI::MPI_InitFinalize does so, and where no one has,
+     * factorize() initialises it itself (PetscInitializeNoArguments) and
+     * finalises it at exit. The matrices live on PETSC_COMM_SELF. Errors of
+     * PETSc are returned, not printed, and thrown as exceptions; a pivot
+     * of MUMPS that is not positive, or a Schur complement that is not, is
+     * a NotPositiveDefiniteError as for SparseCholesky.
+     */
+    class MumpsSchurFactorization : public SchurFactorization
+    {
+    public:
+      MumpsSchurFactorization();
+      ~MumpsSchurFactorization() override;
+      MumpsSchurFactorization(const MumpsSchurFactorization &) = delete;
+      MumpsSchurFactorization &
+      operator=(const MumpsSchurFactorization &) = delete;
+
+      void
+      factorize(const dealii::SparseMatrix<double>      &K,
+                const dealii::AffineConstraints<double> &constraints,
+                const std::vector<unsigned int>         &gamma_dofs) override;
+
+      const std::vector<unsigned int> &
+      schur_dofs() const override;
+
+      void
+      solve_schur_factor(Eigen::MatrixXd &W) const override;
+
+      Eigen::VectorXd
+      solve(const Eigen::VectorXd &b) const override;
+
+      void
+      solve_condensed(const dealii::Vector<double> &f_condensed,
+                      dealii::Vector<double>       &u) const override;
+
+      std::string
+      name() const override;
+
+      /**
+       * The dense lower triangular $L_S$ (row and column k belong to the
+       * degree of freedom schur_dofs()[k]), for checks.
+       */
+      const Eigen::MatrixXd &
+      schur_factor() const;
+
+      /**
+       * The ordering of the interior unknowns MUMPS used (its INFOG(7):
+       * 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD), and the memory
+       * its factorisation used, in MB (INFOG(22)).
+       */
+      int
+      ordering() const;
+      int
+      factor_memory_mb() const;
+
+    private:
+      /**
+       * $x = K_r^{-1} b$ on the free degrees of freedom, composed as the
+       * class documentation says.
+       */
+      Eigen::VectorXd
+      solve_reduced(const Eigen::VectorXd &b) const;
+
+      struct Impl;
+      std::unique_ptr<Impl> impl;
+    };
+  } // namespace linear_algebra
+} // namespace dpana
+
+#endif

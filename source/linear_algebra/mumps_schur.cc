@@ -1,0 +1,495 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+
+#include <dpana/linear_algebra/mumps_schur.h>
+
+#include <deal.II/lac/lapack_templates.h>
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include <petscmat.h>
+
+namespace dpana
+{
+  namespace linear_algebra
+  {
+    namespace
+    {
+      // PETSc reports an error by its return code; while this guard lives,
+      // it returns them without printing a traceback.
+      struct QuietPetsc
+      {
+        QuietPetsc()
+        {
+          PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+        }
+        ~QuietPetsc()
+        {
+          PetscPopErrorHandler();
+        }
+      };
+
+      void
+      check(const PetscErrorCode code, const char *call)
+      {
+        if (code != 0)
+          throw std::runtime_error(std::string("MUMPS through PETSc: ") + call +
+                                   " failed (PETSc error " +
+                                   std::to_string(static_cast<int>(code)) +
+                                   ")");
+      }
+
+      // PETSc is initialised by deal.II's MPI_InitFinalize; a program
+      // without it gets PETSc (and MPI) initialised here and finalised at
+      // exit.
+      void
+      ensure_petsc()
+      {
+        PetscBool initialized = PETSC_FALSE;
+        PetscInitialized(&initialized);
+        if (initialized)
+          return;
+        check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
+        std::atexit([]() {
+          PetscBool finalized = PETSC_FALSE;
+          PetscFinalized(&finalized);
+          if (!finalized)
+            PetscFinalize();
+        });
+      }
+
+
+
+      // MatSolve or MatMult of @p M with @p x, on Eigen's storage.
+      Eigen::VectorXd
+      apply(PetscErrorCode (*operation)(Mat, Vec, Vec),
+            const Mat              M,
+            const Eigen::VectorXd &x,
+            const char            *name)
+      {
+        Eigen::VectorXd y(x.size());
+        Vec             vx, vy;
+        check(
+          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, x.size(), x.data(), &vx),
+          "VecCreateSeqWithArray");
+        check(
+          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, y.size(), y.data(), &vy),
+          "VecCreateSeqWithArray");
+        const PetscErrorCode code = operation(M, vx, vy);
+        VecDestroy(&vx);
+        VecDestroy(&vy);
+        check(code, name);
+        return y;
+      }
+
+
+
+      // MUMPS' INFOG(i) of the factor @p F, -1 without a factor.
+      int
+      infog(const Mat F, const int i)
+      {
+        PetscInt value = -1;
+        if (F)
+          MatMumpsGetInfog(F, i, &value);
+        return value;
+      }
+    } // namespace
+
+
+
+    struct MumpsSchurFactorization::Impl
+    {
+      Mat K = nullptr;
+      Mat F = nullptr;
+
+      dealii::AffineConstraints<double> constraints, homogeneous;
+      std::vector<unsigned int>         free;
+      std::vector<int>                  reduced_index;
+      std::vector<PetscInt>             gamma;
+      std::vector<unsigned int>         schur;
+      Eigen::MatrixXd                   L;
+
+      void
+      destroy()
+      {
+        if (F)
+          MatDestroy(&F);
+        if (K)
+          MatDestroy(&K);
+      }
+
+      void
+      copy_constraints(const dealii::AffineConstraints<double> &c);
+      void
+      number_unknowns(const unsigned int               n_rows,
+                      const std::vector<unsigned int> &gamma_dofs);
+      void
+      create_matrix(const dealii::SparseMatrix<double> &K_full);
+      void
+      factor_interior();
+      void
+      factor_schur_complement();
+
+      // y = K_II^{-1} b_I, zero on Gamma.
+      Eigen::VectorXd
+      solve_interior(const Eigen::VectorXd &b) const;
+      // K_r x.
+      Eigen::VectorXd
+      multiply(const Eigen::VectorXd &x) const;
+    };
+
+
+
+    // The constraints, and a copy without their inhomogeneities for the
+    // homogeneous solves.
+    void
+    MumpsSchurFactorization::Impl::copy_constraints(
+      const dealii::AffineConstraints<double> &c)
+    {
+      AssertThrow(c.is_closed(),
+                  dealii::ExcMessage("MumpsSchurFactorization: the "
+                                     "constraints must be closed."));
+      constraints.copy_from(c);
+      homogeneous.clear();
+      for (const auto &line : c.get_lines())
+        {
+          homogeneous.add_line(line.index);
+          homogeneous.add_entries(line.index, line.entries);
+        }
+      homogeneous.close();
+    }
+
+
+
+    // The free degrees of freedom, numbered consecutively, and the unknowns
+    // of Gamma among them: a free dof of Gamma stands for itself, a
+    // constrained one for its masters.
+    void
+    MumpsSchurFactorization::Impl::number_unknowns(
+      const unsigned int               n_rows,
+      const std::vector<unsigned int> &gamma_dofs)
+    {
+      number_free_dofs(constraints, n_rows, free, reduced_index);
+      const std::vector<bool> in_gamma =
+        unknowns_of_dofs(gamma_dofs, constraints, reduced_index, free.size());
+      gamma.clear();
+      schur.clear();
+      for (unsigned int k = 0; k < free.size(); ++k)
+        if (in_gamma[k])
+          {
+            gamma.push_back(k);
+            schur.push_back(free[k]);
+          }
+    }
+
+
+
+    // The upper triangle of K_r in compressed rows. A row of a deal.II
+    // SparseMatrix holds its diagonal first and then the other columns in
+    // increasing order, so the kept columns are in increasing order.
+    void
+    MumpsSchurFactorization::Impl::create_matrix(
+      const dealii::SparseMatrix<double> &K_full)
+    {
+      std::vector<PetscInt>    row_start(1, 0), columns;
+      std::vector<PetscScalar> values;
+      for (const unsigned int i : free)
+        {
+          const int r = reduced_index[i];
+          for (auto it = K_full.begin(i); it != K_full.end(i); ++it)
+            {
+              const int c = reduced_index[it->column()];
+              if (c >= r && it->value() != 0.0)
+                {
+                  columns.push_back(c);
+                  values.push_back(it->value());
+                }
+            }
+          row_start.push_back(columns.size());
+        }
+      const PetscInt n = free.size();
+      check(MatCreate(PETSC_COMM_SELF, &K), "MatCreate");
+      check(MatSetSizes(K, n, n, n, n), "MatSetSizes");
+      check(MatSetType(K, MATSEQSBAIJ), "MatSetType");
+      check(MatSeqSBAIJSetPreallocationCSR(
+              K, 1, row_start.data(), columns.data(), values.data()),
+            "MatSeqSBAIJSetPreallocationCSR");
+      check(MatSetOption(K, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");
+    }
+
+
+
+    // MUMPS' LL^T with the Schur index set. A zero pivot is reported by
+    // MUMPS as INFOG(1) < 0, which PETSc returns either as an error of the
+    // numeric factorisation or as a factor error; a negative one is only
+    // counted (INFOG(12)), the factorisation of a symmetric positive
+    // definite matrix (MUMPS' SYM = 1) going on without pivoting.
+    void
+    MumpsSchurFactorization::Impl::factor_interior()
+    {
+      check(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F),
+            "MatGetFactor(MATSOLVERMUMPS)");
+      AssertThrow(F != nullptr,
+                  dealii::ExcMessage("MumpsSchurFactorization: this PETSc "
+                                     "has no MUMPS."));
+      if (!gamma.empty())
+        {
+          IS is;
+          check(ISCreateGeneral(PETSC_COMM_SELF,
+                                gamma.size(),
+                                gamma.data(),
+                                PETSC_COPY_VALUES,
+                                &is),
+                "ISCreateGeneral");
+          check(MatFactorSetSchurIS(F, is), "MatFactorSetSchurIS");
+          ISDestroy(&is);
+        }
+      MatFactorInfo info;
+      check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
+      check(MatCholeskyFactorSymbolic(F, K, nullptr, &info),
+            "MatCholeskyFactorSymbolic");
+      const PetscErrorCode code  = MatCholeskyFactorNumeric(F, K, &info);
+      MatFactorError       error = MAT_FACTOR_NOERROR;
+      MatFactorGetError(F, &error);
+      PetscInt status = 0, negative = 0;
+      MatMumpsGetInfog(F, 1, &status);
+      MatMumpsGetInfog(F, 12, &negative);
+      if (code != 0 || error != MAT_FACTOR_NOERROR || status < 0 ||
+          negative > 0)
+        throw NotPositiveDefiniteError(
+          "MUMPS' Cholesky factorisation failed (INFOG(1) = " +
+          std::to_string(status) + ") on a matrix of " +
+          std::to_string(free.size()) +
+          " unknowns: it is not positive definite; a stiffness matrix is "
+          "singular when the body is not held against rigid motions");
+      // Later solves with F are solves with K_II only.
+      check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+    }
+
+
+
+    // S as MUMPS returns it (dense, column-major, both triangles), copied
+    // and factored: its lower triangle becomes L_S.
+    void
+    MumpsSchurFactorization::Impl::factor_schur_complement()
+    {
+      const dealii::types::blas_int n = gamma.size();
+      L.resize(n, n);
+      if (n == 0)
+        return;
+      Mat                  S;
+      MatFactorSchurStatus status;
+      check(MatFactorGetSchurComplement(F, &S, &status),
+            "MatFactorGetSchurComplement");
+      const PetscScalar *values;
+      PetscInt           lda = 0;
+      check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
+      check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
+      for (dealii::types::blas_int j = 0; j < n; ++j)
+        for (dealii::types::blas_int i = j; i < n; ++i)
+          L(i, j) = values[i + j * lda];
+      MatDenseRestoreArrayRead(S, &values);
+      MatFactorRestoreSchurComplement(F, &S, status);
+
+      L.triangularView<Eigen::StrictlyUpper>().setZero();
+      dealii::types::blas_int info = 0;
+      dealii::potrf("L", &n, L.data(), &n, &info);
+      if (info != 0)
+        throw NotPositiveDefiniteError(
+          "the Schur complement on the contact surface (" + std::to_string(n) +
+          " unknowns) is not positive definite "
+          "(LAPACK potrf: " +
+          std::to_string(info) + ")");
+    }
+
+
+
+    Eigen::VectorXd
+    MumpsSchurFactorization::Impl::solve_interior(
+      const Eigen::VectorXd &b) const
+    {
+      Eigen::VectorXd y = apply(MatSolve, F, b, "MatSolve");
+      for (const PetscInt k : gamma)
+        y(k) = 0.0;
+      return y;
+    }
+
+
+
+    Eigen::VectorXd
+    MumpsSchurFactorization::Impl::multiply(const Eigen::VectorXd &x) const
+    {
+      return apply(MatMult, K, x, "MatMult");
+    }
+
+
+
+    MumpsSchurFactorization::MumpsSchurFactorization()
+      : impl(std::make_unique<Impl>())
+    {
+    }
+
+
+
+    MumpsSchurFactorization::~MumpsSchurFactorization()
+    {
+      impl->destroy();
+    }
+
+
+
+    void
+    MumpsSchurFactorization::factorize(
+      const dealii::SparseMatrix<double>      &K,
+      const dealii::AffineConstraints<double> &constraints,
+      const std::vector<unsigned int>         &gamma_dofs)
+    {
+      AssertThrow(K.m() == K.n(), dealii::ExcNotQuadratic());
+      ensure_petsc();
+      const QuietPetsc quiet;
+      impl->destroy();
+      impl->copy_constraints(constraints);
+      impl->number_unknowns(K.m(), gamma_dofs);
+      AssertThrow(!impl->free.empty(),
+                  dealii::ExcMessage(
+                    "MumpsSchurFactorization: there is nothing to factor (no "
+                    "free degrees of freedom)."));
+      impl->create_matrix(K);
+      impl->factor_interior();
+      impl->factor_schur_complement();
+    }
+
+
+
+    const std::vector<unsigned int> &
+    MumpsSchurFactorization::schur_dofs() const
+    {
+      return impl->schur;
+    }
+
+
+
+    const Eigen::MatrixXd &
+    MumpsSchurFactorization::schur_factor() const
+    {
+      return impl->L;
+    }
+
+
+
+    void
+    MumpsSchurFactorization::solve_schur_factor(Eigen::MatrixXd &W) const
+    {
+      AssertDimension(W.rows(), impl->L.rows());
+      const dealii::types::blas_int n = W.rows(), nrhs = W.cols();
+      if (n == 0 || nrhs == 0)
+        return;
+      dealii::types::blas_int info = 0;
+      dealii::trtrs(
+        "L", "N", "N", &n, &nrhs, impl->L.data(), &n, W.data(), &n, &info);
+      AssertThrow(info == 0, dealii::ExcInternalError());
+    }
+
+
+
+    // The two interior solves and the one with S = L_S L_S^T (LAPACK potrs)
+    // of the class documentation.
+    Eigen::VectorXd
+    MumpsSchurFactorization::solve_reduced(const Eigen::VectorXd &b) const
+    {
+      AssertThrow(impl->F != nullptr,
+                  dealii::ExcMessage(
+                    "MumpsSchurFactorization: factorize() first."));
+      const QuietPetsc quiet;
+      Eigen::VectorXd  x = impl->solve_interior(b);
+      if (impl->gamma.empty())
+        return x;
+      const Eigen::VectorXd         Kx = impl->multiply(x);
+      const dealii::types::blas_int n = impl->gamma.size(), one = 1;
+      Eigen::VectorXd               x_gamma(n);
+      for (dealii::types::blas_int k = 0; k < n; ++k)
+        x_gamma(k) = b(impl->gamma[k]) - Kx(impl->gamma[k]);
+      dealii::types::blas_int info = 0;
+      dealii::potrs(
+        "L", &n, &one, impl->L.data(), &n, x_gamma.data(), &n, &info);
+      AssertThrow(info == 0, dealii::ExcInternalError());
+
+      Eigen::VectorXd z = Eigen::VectorXd::Zero(b.size());
+      for (dealii::types::blas_int k = 0; k < n; ++k)
+        z(impl->gamma[k]) = x_gamma(k);
+      x = impl->solve_interior(b - impl->multiply(z));
+      for (dealii::types::blas_int k = 0; k < n; ++k)
+        x(impl->gamma[k]) = x_gamma(k);
+      return x;
+    }
+
+
+
+    Eigen::VectorXd
+    MumpsSchurFactorization::solve(const Eigen::VectorXd &b) const
+    {
+      const auto            &free = impl->free;
+      dealii::Vector<double> u(b.size());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        u[i] = b(i);
+      impl->homogeneous.condense(u);
+      Eigen::VectorXd b_r(free.size());
+      for (unsigned int k = 0; k < free.size(); ++k)
+        b_r(k) = u[free[k]];
+      const Eigen::VectorXd x_r = solve_reduced(b_r);
+      u                         = 0.0;
+      for (unsigned int k = 0; k < free.size(); ++k)
+        u[free[k]] = x_r(k);
+      impl->homogeneous.distribute(u);
+      Eigen::VectorXd x(u.size());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        x(i) = u[i];
+      return x;
+    }
+
+
+
+    void
+    MumpsSchurFactorization::solve_condensed(
+      const dealii::Vector<double> &f_condensed,
+      dealii::Vector<double>       &u) const
+    {
+      const auto     &free = impl->free;
+      Eigen::VectorXd f_r(free.size());
+      for (unsigned int k = 0; k < free.size(); ++k)
+        f_r(k) = f_condensed[free[k]];
+      const Eigen::VectorXd x_r = solve_reduced(f_r);
+      u.reinit(f_condensed.size());
+      for (unsigned int k = 0; k < free.size(); ++k)
+        u[free[k]] = x_r(k);
+      impl->constraints.distribute(u);
+    }
+
+
+
+    std::string
+    MumpsSchurFactorization::name() const
+    {
+      return "mumps";
+    }
+
+
+
+    int
+    MumpsSchurFactorization::ordering() const
+    {
+      return infog(impl->F, 7);
+    }
+
+
+
+    int
+    MumpsSchurFactorization::factor_memory_mb() const
+    {
+      return infog(impl->F, 22);
+    }
+  } // namespace linear_algebra
+} // namespace dpana
