@@ -87,3 +87,28 @@ TEST(Monitor, Stall)
             "splitting did not converge: no residual decrease in 3 "
             "iterations (cycling)");
 }
+
+
+
+// At the iteration cap the message says how far the solver is: the
+// residual, its mean rate per iteration and the iterations still needed at
+// that rate (residuals 1e-2, 1e-3, 1e-4: a factor 0.1 per sweep, 4 more to
+// 1e-8), or that it is not falling.
+TEST(Monitor, IterationLimitMessageGivesTheRate)
+{
+  const ContactProblem p = random_problem(2, 3, 0.3, 1);
+  SolverOptions        o;
+  o.tolerance = 1e-8;
+  std::vector<double>   history;
+  ConvergenceMonitor    monitor(p, o, "NSGS", "sweeps", history);
+  const Eigen::VectorXd r = Eigen::VectorXd::Ones(6);
+  for (const double x : {1e-2, 1e-3, 1e-4})
+    monitor.observe(figures(x), r);
+  EXPECT_EQ(monitor.iteration_limit_message(),
+            "NSGS: iteration limit reached (residual 1.00e-04, falling by a "
+            "factor 0.100000 per sweep: about 4 more sweeps needed)");
+  monitor.observe(figures(1e-2), r);
+  EXPECT_EQ(monitor.iteration_limit_message(),
+            "NSGS: iteration limit reached (residual 1.00e-02, not falling "
+            "over the last 3 sweeps)");
+}
