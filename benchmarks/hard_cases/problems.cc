@@ -13,21 +13,6 @@ namespace dpana
   {
     namespace
     {
-      // The compliance of one body, or of two bodies whose normal-tangential
-      // couplings have opposite signs (they cancel for equal bodies).
-      Eigen::MatrixXd
-      compliance(const IndenterSpec &spec)
-      {
-        auto one = [&](const double young, const double coupling) {
-          const HalfSpaceOptions o{young, spec.nu, coupling};
-          return spec.dim == 2 ? half_plane_compliance(spec.m, o) :
-                                 half_space_compliance(spec.m, o);
-        };
-        if (spec.stiffness_ratio <= 0)
-          return one(1.0, 1.0);
-        return one(1.0, 1.0) + one(1.0 / spec.stiffness_ratio, -1.0);
-      }
-
       // The centre of element j on [-1/2, 1/2]^(d-1).
       void
       centre(const IndenterSpec &spec,
@@ -38,6 +23,33 @@ namespace dpana
         const double h = 1.0 / spec.m;
         x              = -0.5 + (j % spec.m + 0.5) * h;
         y              = (spec.dim == 3) ? -0.5 + (j / spec.m + 0.5) * h : 0.0;
+      }
+
+      // The compliance of the body. With a stiffness ratio k, the elements
+      // of the right half (x > 0) are k times more compliant than those of
+      // the left: A = S A_0 S with S = diag(1 on the left, sqrt(k) on the
+      // right), symmetric positive definite like A_0, the compliance of a
+      // contact surface that crosses from one material to another (a
+      // rescaling of the whole of A would change nothing: the solvers and
+      // the residual are invariant under it).
+      Eigen::MatrixXd
+      compliance(const IndenterSpec &spec)
+      {
+        const HalfSpaceOptions o{1.0, spec.nu, 1.0};
+        Eigen::MatrixXd A = spec.dim == 2 ? half_plane_compliance(spec.m, o) :
+                                            half_space_compliance(spec.m, o);
+        if (spec.stiffness_ratio <= 0)
+          return A;
+        const unsigned int d = spec.dim;
+        Eigen::VectorXd    S = Eigen::VectorXd::Ones(A.rows());
+        for (Eigen::Index i = 0; i < A.rows(); ++i)
+          {
+            double x, y;
+            centre(spec, static_cast<unsigned int>(i / d), x, y);
+            if (x > 0)
+              S[i] = std::sqrt(spec.stiffness_ratio);
+          }
+        return S.asDiagonal() * A * S.asDiagonal();
       }
 
       // The equality rows of the floating punches: per punch, the balance
@@ -146,7 +158,7 @@ namespace dpana
               IndenterSpec s    = base;
               s.stiffness_ratio = ratio;
               s.mu              = 1.0;
-              add("stiffness ratio", d + label("E1/E2", ratio), s);
+              add("stiffness ratio", d + label("k", ratio), s);
             }
           for (const double nu : {0.0, 0.3, 0.49, 0.4999})
             {

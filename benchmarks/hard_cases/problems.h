@@ -3,8 +3,8 @@
 // compliances (half_space.h of the solver_vs_siconos benchmark, Flamant,
 // Boussinesq and Cerruti) have the structure and the conditioning of the
 // condensed problems of real meshes, varied along every axis that makes a
-// contact problem hard: the friction coefficient, the ratio of the
-// stiffnesses of two bodies, Poisson's ratio, the sides of the friction
+// contact problem hard: the friction coefficient, a stiffness contrast
+// along the contact surface, Poisson's ratio, the sides of the friction
 // polygon, gaps and interference, floating bodies (held by contact alone:
 // equality rows G r = e) and the fineness of the contact surface (the
 // condition number of A grows like n in 2D and like sqrt(n) in 3D).
@@ -38,7 +38,9 @@ namespace dpana
       double       mu = 0.3;
       // Poisson's ratio of both bodies.
       double nu = 0.3;
-      // E_1 / E_2 of two bodies (E_1 = 1); 0: one body on a rigid base.
+      // Stiffness contrast k: the elements with x > 0 are k times more
+      // compliant than the others (see compliance() in problems.cc); 0:
+      // none.
       double stiffness_ratio = 0;
       // The friction set in 3D and the sides of its polygon.
       contact::ConeModel cone  = contact::ConeModel::disc;

@@ -8,14 +8,23 @@ namespace dpana
 {
   namespace contact
   {
-    double
+    Eigen::VectorXd
     residual_rho(const ContactProblem &problem)
     {
-      const double tr = problem.A.trace();
-      if (!(tr > 0.0))
-        throw std::invalid_argument(
-          "contact problem: A has a non-positive trace");
-      return static_cast<double>(problem.A.rows()) / tr;
+      const unsigned int d = problem.dim;
+      const unsigned int n = problem.n_elements();
+      Eigen::VectorXd    rho(n);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double tr = problem.A.block(d * j, d * j, d, d).trace();
+          if (!(tr > 0.0))
+            throw std::invalid_argument("contact problem: the diagonal block "
+                                        "of A of element " +
+                                        std::to_string(j) +
+                                        " has a non-positive trace");
+          rho[j] = d / tr;
+        }
+      return rho;
     }
 
 
@@ -72,19 +81,21 @@ namespace dpana
 
     double
     residual_scale(const ContactProblem  &problem,
-                   const double           rho,
+                   const Eigen::VectorXd &rho,
                    const Eigen::VectorXd &r)
     {
-      // rho ||D^+||: the load term with the gaps (negative D_N) left out.
+      // ||rho D^+||: the load term with the gaps (negative D_N) left out,
+      // each element's entries times its rho_j.
       const unsigned int d    = problem.dim;
       double             load = 0.0;
       for (Eigen::Index i = 0; i < problem.D.size(); ++i)
         {
           const double x =
-            (i % d == 0) ? std::max(problem.D[i], 0.0) : problem.D[i];
+            rho[i / d] *
+            ((i % d == 0) ? std::max(problem.D[i], 0.0) : problem.D[i]);
           load += x * x;
         }
-      return r.norm() + rho * std::sqrt(load);
+      return r.norm() + std::sqrt(load);
     }
 
 
@@ -115,16 +126,16 @@ namespace dpana
       if (r.size() != problem.D.size() || u.size() != problem.D.size())
         throw std::invalid_argument(
           "element_residuals: r and u must have the size of D");
-      const unsigned int d = problem.dim;
-      const unsigned int n = problem.n_elements();
-      const FrictionSet  set(problem);
-      const double       rho = residual_rho(problem);
-      Eigen::VectorXd    norms(n);
+      const unsigned int    d = problem.dim;
+      const unsigned int    n = problem.n_elements();
+      const FrictionSet     set(problem);
+      const Eigen::VectorXd rho = residual_rho(problem);
+      Eigen::VectorXd       norms(n);
       for (unsigned int j = 0; j < n; ++j)
         {
           double F[3];
           natural_map_element(
-            set, rho, problem.mu[j], r.data() + d * j, u.data() + d * j, F);
+            set, rho[j], problem.mu[j], r.data() + d * j, u.data() + d * j, F);
           double sum = 0.0;
           for (unsigned int k = 0; k < d; ++k)
             sum += F[k] * F[k];
@@ -141,7 +152,7 @@ namespace dpana
     ResidualFigures
     compute_residual_from_u(const ContactProblem  &problem,
                             const FrictionSet     &set,
-                            const double           rho,
+                            const Eigen::VectorXd &rho,
                             const Eigen::VectorXd &r,
                             const Eigen::VectorXd &u)
     {
@@ -155,7 +166,7 @@ namespace dpana
           const double *uj = u.data() + d * j;
           const double  mu = problem.mu[j];
           double        F[3];
-          natural_map_element(set, rho, mu, rj, uj, F);
+          natural_map_element(set, rho[j], mu, rj, uj, F);
           for (unsigned int k = 0; k < d; ++k)
             sum += F[k] * F[k];
 
@@ -212,16 +223,15 @@ namespace dpana
       if (r.size() != problem.D.size() || u.size() != problem.D.size())
         throw std::invalid_argument(
           "classify: r and u must have the size of D");
-      const unsigned int d = problem.dim;
-      const unsigned int n = problem.n_elements();
-      const FrictionSet  set(problem);
-      const double       rho = (n > 0) ? residual_rho(problem) : 1.0;
+      const unsigned int    d = problem.dim;
+      const unsigned int    n = problem.n_elements();
+      const FrictionSet     set(problem);
+      const Eigen::VectorXd rho = residual_rho(problem);
       // Tolerances: tractions relative to ||r||_inf, displacements (times
-      // rho, a traction) relative to the scale of the shared residual.
+      // rho_j, a traction) relative to the scale of the shared residual.
       const double traction_tolerance =
         tolerance * (r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0);
-      const double displacement_tolerance =
-        tolerance * residual_scale(problem, rho, r) / rho;
+      const double scale = tolerance * residual_scale(problem, rho, r);
       std::vector<ContactStatus> status(n, ContactStatus::separated);
       for (unsigned int j = 0; j < n; ++j)
         status[j] = classify_element(set,
@@ -229,7 +239,7 @@ namespace dpana
                                      r.data() + d * j,
                                      u.data() + d * j,
                                      traction_tolerance,
-                                     displacement_tolerance);
+                                     scale / rho[j]);
       return status;
     }
   } // namespace contact

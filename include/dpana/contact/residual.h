@@ -8,11 +8,11 @@
 // formulation's law (Signorini + Coulomb, non-associated) holds at element j if
 // and only if
 // @f[
-//   F_j(r) = r_j - \Pi_{K_j}\big( r_j - \rho\, \tilde u_j \big) = 0,
+//   F_j(r) = r_j - \Pi_{K_j}\big( r_j - \rho_j\, \tilde u_j \big) = 0,
 //   \qquad
 //   \tilde u_j = \big( u_{N,j} - \mu_j\, \sigma(-u_{T,j}),\ u_{T,j} \big),
 // @f]
-// for any rho > 0. tilde u is the modified (bipotential) velocity of De
+// for any rho_j > 0. tilde u is the modified (bipotential) velocity of De
 // Saxce and Feng written in the reference formulation's signs; for the disc and
 // the interval sigma(-u_T) = ||u_T||, for the polygon it is max_i v_i . (-u_T)
 // over the polygon vertices. Proof sketch: F_j = 0 iff -tilde u_j lies in the
@@ -26,10 +26,12 @@
 //
 // @sect3{The scale}
 //
-// The measure is made independent of the units of forces and lengths, and
-// of the size of the gaps:
-//   rho   = (d n) / trace(A)  (inverse of the mean diagonal compliance),
-//   S(r)  = ||r||_2 + rho ||D^+||_2,
+// The measure is made independent of the units of forces and lengths, of
+// contrasts of stiffness along the contact surface, and of the size of the
+// gaps:
+//   rho_j = d / trace(A_jj)  (inverse of the mean diagonal compliance of
+//                              element j),
+//   S(r)  = ||r||_2 + ||(rho_j D^+_j)_j||_2,
 //   natural_map = sqrt( sum_j ||F_j||^2 + sum_i E_i^2 ) / S(r),
 // with D^+ the load term whose normal entries are cut at zero,
 // D^+_j = (max(D_N,j, 0), D_T,j), and E_i = (G_i r - e_i) / ||G_i||_2 the
@@ -39,6 +41,14 @@
 // nothing pushes the surfaces together, which is then the solution).
 // Both numerator and denominator are tractions, and a rescaling of the loads
 // or of the stiffness leaves the figure unchanged.
+//
+// Why rho_j per element: rho_j u_j is the traction that element j's own
+// compliance turns into its displacement, so F_j weighs tractions and
+// displacements alike on soft and stiff elements. One rho for all (the
+// inverse of the mean compliance) would be set by the softest elements, and
+// the displacements of the stiff ones would hardly count: on a surface whose
+// compliance jumps by 10^6 a residual of 1e-10 left errors of 1e-4 in the
+// tractions.
 //
 // Why D^+ and not D: a negative D_N,j is an open gap (an element far from
 // the obstacle, or a body not yet pushed onto it). Scaling by rho ||D||
@@ -67,16 +77,16 @@
 //
 // One classification for every solver and every comparison (classify()).
 // With a relative tolerance tau (SolverOptions::classification_tolerance,
-// default 1e-8), t = tau ||r||_inf and v = tau S(r) / rho, element j is
+// default 1e-8), t = tau ||r||_inf and v_j = tau S(r) / rho_j, element j is
 //   separated  if N_j >= -t,
-//   slip       otherwise, if it moves, ||u_T,j|| > v, or if its traction is
+//   slip       otherwise, if it moves, ||u_T,j|| > v_j, or if its traction is
 //              on the boundary of the friction set, gamma(T_j) >= -mu_j N_j
 //              - t (so every contact with mu_j = 0 slips),
 //   stick      otherwise (T_j strictly inside, u_T,j = 0 to the tolerance).
 // Both tests are needed: an approximate solution may have a slipping
 // element a little inside the cone (u_T != 0 shows it slips), and an exact
 // one may stick with T on the boundary (impending slip, counted as slip).
-// At a solution with natural_map <= tol, a sticking element has rho
+// At a solution with natural_map <= tol, a sticking element has rho_j
 // ||u_T,j|| <= tol S(r), so it is not taken for slipping as long as tol <=
 // tau.
 #ifndef dpana_contact_residual_h
@@ -102,8 +112,9 @@ namespace dpana
       double equilibrium     = 0; // ||G r - e||_inf
     };
 
-    // The scalar rho of the residual: (d n) / trace(A).
-    double
+    // The rho_j = d / trace(A_jj) of every element (see above); throws
+    // std::invalid_argument if a diagonal block has a non-positive trace.
+    Eigen::VectorXd
     residual_rho(const ContactProblem &problem);
 
     // All the figures for tractions r and rigid-mode amplitudes alpha (alpha
@@ -118,7 +129,7 @@ namespace dpana
     ResidualFigures
     compute_residual_from_u(const ContactProblem  &problem,
                             const FrictionSet     &set,
-                            const double           rho,
+                            const Eigen::VectorXd &rho,
                             const Eigen::VectorXd &r,
                             const Eigen::VectorXd &u);
 
@@ -135,11 +146,11 @@ namespace dpana
                         const double      *u_j,
                         double            *F_j);
 
-    // The scale S(r) = ||r||_2 + rho ||D^+||_2 of the shared residual (see
-    // above), a traction.
+    // The scale S(r) = ||r||_2 + ||(rho_j D^+_j)_j||_2 of the shared
+    // residual (see above), a traction; rho from residual_rho().
     double
     residual_scale(const ContactProblem  &problem,
-                   const double           rho,
+                   const Eigen::VectorXd &rho,
                    const Eigen::VectorXd &r);
 
     // sqrt(sum_i E_i^2), E_i = (G_i r - e_i) / ||G_i||_2: the part of the

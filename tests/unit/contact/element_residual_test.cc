@@ -12,7 +12,7 @@
 
 using namespace dpana_test;
 
-// Two uncoupled 2D elements, A = I (so rho = d n / trace(A) = 1), at the
+// Two uncoupled 2D elements, A = I (so rho_j = d / trace(A_jj) = 1), at the
 // tractions r = (0, 0 | -1, 0), which solve neither element:
 //
 // Element 1, mu = 0, D_1 = (1, 0): u_1 = (1, 0), the point

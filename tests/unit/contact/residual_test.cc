@@ -36,7 +36,7 @@ TEST(Residual, ModifiedVelocityVanishesAtCoulombSolution)
   // The plain projection residual (associated law) does NOT vanish there:
   // u_N = 0 but u_T = 1.71, and r - Pi_K(r - rho u) != 0.
   const FrictionSet     set(p);
-  const double          rho = residual_rho(p);
+  const double          rho = residual_rho(p)[0];
   const Eigen::Vector2d u   = p.A * r + p.D;
   const Eigen::Vector2d x   = r - rho * u;
   Eigen::Vector2d       proj;
