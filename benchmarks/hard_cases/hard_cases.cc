@@ -169,8 +169,10 @@ main(int argc, char **argv)
   std::vector<benchmarks::HardCase> cases = benchmarks::hard_cases(quick);
   for (const std::string &file : fclib)
     {
-      const std::string name = file.substr(file.find_last_of('/') + 1);
-      cases.push_back({"whole run", file, io::read_fclib_local(file)});
+      // The name of the run: the folder of its problem.hdf5.
+      std::string name = file.substr(0, file.find_last_of('/'));
+      name             = name.substr(name.find_last_of('/') + 1);
+      cases.push_back({"whole run", name, io::read_fclib_local(file)});
     }
 
   const std::vector<Column> solvers = columns();
