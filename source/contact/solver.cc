@@ -71,6 +71,24 @@ namespace dpana
 
 
 
+      // The options of a fallback solver: NSGS, the last resort, converges
+      // linearly at a rate set by the conditioning of A and may need tens of
+      // thousands of sweeps (the 3D block: 2e4 - 3.5e4), so it gets 100
+      // times the iteration cap; its stall test still stops it early where
+      // it cycles or the problem has no solution.
+      SolverOptions
+      fallback_options(const SolverOptions &options, const SolverType type)
+      {
+        SolverOptions o = options;
+        if (type == SolverType::nsgs)
+          o.max_iterations = options.max_iterations >= 100000000u ?
+                               options.max_iterations :
+                               100 * options.max_iterations;
+        return o;
+      }
+
+
+
       // The robust mode of the splitting (SolverOptions::fallback):
       // Alart-Curnier from the splitting's last iterate, then NSGS from the
       // best iterate so far. The answer with the smallest residual is
@@ -90,7 +108,8 @@ namespace dpana
             const Eigen::VectorXd  start =
               r_best.allFinite() ? r_best :
                                     Eigen::VectorXd::Zero(problem.D.size());
-            attempts.push_back(solve_with(problem, next, options, &start));
+            attempts.push_back(solve_with(
+              problem, next, fallback_options(options, next), &start));
             const SolverResult &last = attempts.back();
             if (last.converged || last.residual < attempts[best].residual)
               best = attempts.size() - 1;

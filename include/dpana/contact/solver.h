@@ -90,11 +90,13 @@ namespace dpana
       // splitting stops without converging (stall, cycling, stagnation,
       // iteration cap), solve again by Alart-Curnier from the splitting's
       // last iterate and, should that fail as well, by NSGS from the best
-      // iterate so far. SolverResult::solver names the solver whose answer
-      // is returned (the one with the smallest residual if none converged),
-      // SolverResult::fallbacks the others with their stop messages,
-      // SolverResult::iterations counts the iterations of the answer's
-      // solver and residual_history those of all of them, in order.
+      // iterate so far, with 100 times max_iterations sweeps (NSGS converges
+      // linearly, slowly where A is badly conditioned; its stall test stops
+      // it early where it cycles). SolverResult::solver names the solver
+      // whose answer is returned (the one with the smallest residual if none
+      // converged), SolverResult::fallbacks the others with their stop
+      // messages, SolverResult::iterations counts the iterations of the
+      // answer's solver and residual_history those of all of them, in order.
       bool fallback = true;
     };
 
