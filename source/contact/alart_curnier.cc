@@ -331,12 +331,12 @@ namespace dpana
       SolverResult
       AlartCurnier::run()
       {
-        ConvergenceMonitor monitor(problem,
+        ConvergenceMonitor    monitor(problem,
                                    options,
                                    "Alart-Curnier",
                                    "iterations",
                                    result.residual_history);
-        const double       rho_residual = residual_rho(problem);
+        const Eigen::VectorXd rho_residual = residual_rho(problem);
         map.evaluate(r, alpha, F);
         for (unsigned int k = 0; k <= options.max_iterations; ++k)
           {

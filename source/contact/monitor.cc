@@ -1,6 +1,8 @@
 #include <dpana/contact/monitor.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace dpana
@@ -127,7 +129,35 @@ namespace dpana
     std::string
     ConvergenceMonitor::iteration_limit_message() const
     {
-      return name + ": iteration limit reached";
+      std::string       message = name + ": iteration limit reached";
+      const std::size_t k       = history.size();
+      if (k < 2 || !(history.back() > 0.0))
+        return message;
+      // The mean rate over the last (at most 100) iterations and the
+      // iterations it would still need at that rate.
+      const std::size_t span  = std::min<std::size_t>(100, k - 1);
+      const double      first = history[k - 1 - span];
+      const double      rate =
+        (first > 0.0) ? std::pow(history.back() / first, 1.0 / span) : 1.0;
+      char buffer[160];
+      if (rate < 1.0)
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      " (residual %.2e, falling by a factor %.6f per %s: "
+                      "about %.2g more %s needed)",
+                      history.back(),
+                      rate,
+                      unit.substr(0, unit.size() - 1).c_str(),
+                      std::log(tolerance / history.back()) / std::log(rate),
+                      unit.c_str());
+      else
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      " (residual %.2e, not falling over the last %zu %s)",
+                      history.back(),
+                      span,
+                      unit.c_str());
+      return message + buffer;
     }
   } // namespace contact
 } // namespace dpana

@@ -54,7 +54,7 @@ namespace dpana
         const SolverOptions   &options;
         const unsigned int     d, n;
         const FrictionSet      set;
-        const double           rho;
+        const Eigen::VectorXd  rho;
         double                 penalty = 0.0;
         Eigen::MatrixXd        A_augmented;
         const Eigen::MatrixXd &A; // A, or A + penalty G^T G

@@ -8,14 +8,23 @@ namespace dpana
 {
   namespace contact
   {
-    double
+    Eigen::VectorXd
     residual_rho(const ContactProblem &problem)
     {
-      const double tr = problem.A.trace();
-      if (!(tr > 0.0))
-        throw std::invalid_argument(
-          "contact problem: A has a non-positive trace");
-      return static_cast<double>(problem.A.rows()) / tr;
+      const unsigned int d = problem.dim;
+      const unsigned int n = problem.n_elements();
+      Eigen::VectorXd    rho(n);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double tr = problem.A.block(d * j, d * j, d, d).trace();
+          if (!(tr > 0.0))
+            throw std::invalid_argument("contact problem: the diagonal block "
+                                        "of A of element " +
+                                        std::to_string(j) +
+                                        " has a non-positive trace");
+          rho[j] = d / tr;
+        }
+      return rho;
     }
 
 
@@ -70,6 +79,45 @@ namespace dpana
 
 
 
+    double
+    residual_scale(const ContactProblem  &problem,
+                   const Eigen::VectorXd &rho,
+                   const Eigen::VectorXd &r)
+    {
+      // ||rho D^+||: the load term with the gaps (negative D_N) left out,
+      // each element's entries times its rho_j.
+      const unsigned int d    = problem.dim;
+      double             load = 0.0;
+      for (Eigen::Index i = 0; i < problem.D.size(); ++i)
+        {
+          const double x =
+            rho[i / d] *
+            ((i % d == 0) ? std::max(problem.D[i], 0.0) : problem.D[i]);
+          load += x * x;
+        }
+      return r.norm() + std::sqrt(load);
+    }
+
+
+
+    double
+    equality_defect(const ContactProblem &problem, const Eigen::VectorXd &r)
+    {
+      if (problem.n_equalities() == 0)
+        return 0.0;
+      const Eigen::VectorXd defect = problem.G * r - problem.e;
+      double                sum    = 0.0;
+      for (Eigen::Index i = 0; i < defect.size(); ++i)
+        {
+          const double row = problem.G.row(i).norm();
+          const double x   = (row > 0.0) ? defect[i] / row : defect[i];
+          sum += x * x;
+        }
+      return std::sqrt(sum);
+    }
+
+
+
     Eigen::VectorXd
     element_residuals(const ContactProblem  &problem,
                       const Eigen::VectorXd &r,
@@ -78,21 +126,24 @@ namespace dpana
       if (r.size() != problem.D.size() || u.size() != problem.D.size())
         throw std::invalid_argument(
           "element_residuals: r and u must have the size of D");
-      const unsigned int d = problem.dim;
-      const unsigned int n = problem.n_elements();
-      const FrictionSet  set(problem);
-      const double       rho = residual_rho(problem);
-      Eigen::VectorXd    norms(n);
+      const unsigned int    d = problem.dim;
+      const unsigned int    n = problem.n_elements();
+      const FrictionSet     set(problem);
+      const Eigen::VectorXd rho = residual_rho(problem);
+      Eigen::VectorXd       norms(n);
       for (unsigned int j = 0; j < n; ++j)
         {
           double F[3];
           natural_map_element(
-            set, rho, problem.mu[j], r.data() + d * j, u.data() + d * j, F);
+            set, rho[j], problem.mu[j], r.data() + d * j, u.data() + d * j, F);
           double sum = 0.0;
           for (unsigned int k = 0; k < d; ++k)
             sum += F[k] * F[k];
           norms[j] = std::sqrt(sum);
         }
+      const double scale = residual_scale(problem, rho, r);
+      if (scale > 0.0)
+        norms /= scale;
       return norms;
     }
 
@@ -101,7 +152,7 @@ namespace dpana
     ResidualFigures
     compute_residual_from_u(const ContactProblem  &problem,
                             const FrictionSet     &set,
-                            const double           rho,
+                            const Eigen::VectorXd &rho,
                             const Eigen::VectorXd &r,
                             const Eigen::VectorXd &u)
     {
@@ -115,7 +166,7 @@ namespace dpana
           const double *uj = u.data() + d * j;
           const double  mu = problem.mu[j];
           double        F[3];
-          natural_map_element(set, rho, mu, rj, uj, F);
+          natural_map_element(set, rho[j], mu, rj, uj, F);
           for (unsigned int k = 0; k < d; ++k)
             sum += F[k] * F[k];
 
@@ -125,13 +176,40 @@ namespace dpana
           f.complementarity =
             std::max(f.complementarity, std::abs(rj[0] * uj[0]));
         }
-      const double denominator = r.norm() + rho * problem.D.norm();
-      f.natural_map = (denominator > 0.0) ? std::sqrt(sum) / denominator :
-                      (sum > 0.0)         ? std::sqrt(sum) :
-                                            0.0;
       if (problem.n_equalities() > 0)
-        f.equilibrium = (problem.G * r - problem.e).lpNorm<Eigen::Infinity>();
+        {
+          f.equilibrium = (problem.G * r - problem.e).lpNorm<Eigen::Infinity>();
+          const double defect = equality_defect(problem, r);
+          sum += defect * defect;
+        }
+      const double scale = residual_scale(problem, rho, r);
+      f.natural_map      = (scale > 0.0) ? std::sqrt(sum) / scale :
+                           (sum > 0.0)   ? std::sqrt(sum) :
+                                           0.0;
       return f;
+    }
+
+
+
+    ContactStatus
+    classify_element(const FrictionSet &set,
+                     const double       mu_j,
+                     const double      *r_j,
+                     const double      *u_j,
+                     const double       traction_tolerance,
+                     const double       displacement_tolerance)
+    {
+      const double N = r_j[0];
+      if (N >= -traction_tolerance)
+        return ContactStatus::separated;
+      double slip_norm = 0.0;
+      for (unsigned int k = 0; k < set.tangential_dim(); ++k)
+        slip_norm += u_j[1 + k] * u_j[1 + k];
+      const bool moves = std::sqrt(slip_norm) > displacement_tolerance;
+      const bool on_boundary =
+        set.gauge(r_j + 1) >= -mu_j * N - traction_tolerance;
+      return (moves || on_boundary) ? ContactStatus::slip :
+                                      ContactStatus::stick;
     }
 
 
@@ -142,23 +220,26 @@ namespace dpana
              const Eigen::VectorXd &u,
              const double           tolerance)
     {
-      (void)u;
-      const unsigned int d = problem.dim;
-      const unsigned int n = problem.n_elements();
-      const FrictionSet  set(problem);
-      const double       s = r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0;
+      if (r.size() != problem.D.size() || u.size() != problem.D.size())
+        throw std::invalid_argument(
+          "classify: r and u must have the size of D");
+      const unsigned int    d = problem.dim;
+      const unsigned int    n = problem.n_elements();
+      const FrictionSet     set(problem);
+      const Eigen::VectorXd rho = residual_rho(problem);
+      // Tolerances: tractions relative to ||r||_inf, displacements (times
+      // rho_j, a traction) relative to the scale of the shared residual.
+      const double traction_tolerance =
+        tolerance * (r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0);
+      const double scale = tolerance * residual_scale(problem, rho, r);
       std::vector<ContactStatus> status(n, ContactStatus::separated);
       for (unsigned int j = 0; j < n; ++j)
-        {
-          const double N = r[d * j];
-          if (N >= -tolerance * s)
-            status[j] = ContactStatus::separated;
-          else if (set.gauge(r.data() + d * j + 1) >=
-                   -problem.mu[j] * N - tolerance * s)
-            status[j] = ContactStatus::slip;
-          else
-            status[j] = ContactStatus::stick;
-        }
+        status[j] = classify_element(set,
+                                     problem.mu[j],
+                                     r.data() + d * j,
+                                     u.data() + d * j,
+                                     traction_tolerance,
+                                     scale / rho[j]);
       return status;
     }
   } // namespace contact

@@ -219,7 +219,7 @@ namespace dpana
         const SolverOptions  &options;
         const SplitProblem    split;
         const FrictionSet     set;
-        const double          rho;
+        const Eigen::VectorXd rho;
         const bool            use_pgs;
         NormalLcp             normal;
         FrictionQp            friction;

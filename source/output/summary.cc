@@ -88,6 +88,8 @@ namespace dpana
             {"complementarity", res.figures.complementarity},
             {"equilibrium", res.figures.equilibrium}}},
           {"message", res.message},
+          {"solved_by", contact::to_string(res.solver)},
+          {"fallbacks", res.fallbacks},
           {"asymmetry_of_A", summary.asymmetry},
           {"contact_half_width", summary.half_width},
           {"contact_half_width_element", summary.half_width_element},

@@ -66,6 +66,14 @@ namespace dpana
                         Integer(1),
                         "Maximum number of outer iterations.");
       prm.declare_entry(
+        "Fallback",
+        "true",
+        Bool(),
+        "Splitting solvers only: if the splitting stops without converging "
+        "(it cycles or stalls, as it may for large friction coefficients), "
+        "solve again by alart_curnier and then by nsgs; the log and "
+        "summary.json (contact.solved_by) name the solver of the answer.");
+      prm.declare_entry(
         "Allow non-converged",
         "false",
         Bool(),
@@ -83,6 +91,7 @@ namespace dpana
       options.type      = contact::solver_type_from_string(prm.get("Solver"));
       options.tolerance = prm.get_double("Tolerance");
       options.max_iterations = prm.get_integer("Maximum iterations");
+      options.fallback       = prm.get_bool("Fallback");
       allow_non_converged    = prm.get_bool("Allow non-converged");
       if (options.tolerance <= 0)
         throw InputError("Contact / Tolerance: must be positive");

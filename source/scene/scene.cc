@@ -292,10 +292,13 @@ namespace dpana
       const auto &r = summary_.result;
       if (!quiet)
         std::cout << "        Contact solver "
-                  << contact::to_string(solver.options.type) << ": "
-                  << (r.converged ? "converged" : "NOT converged") << " in "
-                  << r.iterations << " iterations, residual " << r.residual
-                  << " (" << r.message << ")" << std::endl;
+                  << contact::to_string(solver.options.type)
+                  << (r.fallbacks.empty() ?
+                        std::string() :
+                        " (answer by " + contact::to_string(r.solver) + ")")
+                  << ": " << (r.converged ? "converged" : "NOT converged")
+                  << " in " << r.iterations << " iterations, residual "
+                  << r.residual << " (" << r.message << ")" << std::endl;
     }
 
 

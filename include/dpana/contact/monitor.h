@@ -106,6 +106,11 @@ namespace dpana
       std::string
       stall_message(const std::string &detail) const;
 
+      // "NAME: iteration limit reached (residual R, falling by a factor q
+      // per UNIT: about K more UNITs needed)", q the mean rate of the last
+      // 100 iterations (or "not falling" when q >= 1): where a linearly
+      // converging solver (NSGS on an ill-conditioned A) cannot get within
+      // its iteration cap, the message says how far it is.
       std::string
       iteration_limit_message() const;
 

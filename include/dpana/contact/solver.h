@@ -13,6 +13,10 @@
 //   - alart_curnier: semismooth Newton on the Alart-Curnier equations with
 //     an Armijo line search (alart_curnier.h); locally fast, not globally
 //     convergent (reports a failed line search honestly).
+//
+// The default solver is robust: a splitting that stops without converging
+// hands over to Alart-Curnier and then to NSGS (SolverOptions::fallback),
+// and the result says which solver produced the answer.
 #ifndef dpana_contact_solver_h
 #define dpana_contact_solver_h
 
@@ -82,6 +86,18 @@ namespace dpana
       // clamp(0.1 * last outer residual, inner_tolerance, 1e-4) instead of
       // inner_tolerance throughout.
       bool adaptive_inner_tolerance = true;
+      // Splitting only (the robust mode of the default solver): when the
+      // splitting stops without converging (stall, cycling, stagnation,
+      // iteration cap), solve again by Alart-Curnier from the splitting's
+      // last iterate and, should that fail as well, by NSGS from the best
+      // iterate so far, with 100 times max_iterations sweeps (NSGS converges
+      // linearly, slowly where A is badly conditioned; its stall test stops
+      // it early where it cycles). SolverResult::solver names the solver
+      // whose answer is returned (the one with the smallest residual if none
+      // converged), SolverResult::fallbacks the others with their stop
+      // messages, SolverResult::iterations counts the iterations of the
+      // answer's solver and residual_history those of all of them, in order.
+      bool fallback = true;
     };
 
     struct SolverResult
@@ -99,6 +115,12 @@ namespace dpana
       // Work of the inner solvers (sum over the outer iterations of the
       // splitting; 0 for NSGS).
       unsigned long inner_iterations = 0;
+      // The solver whose answer this is: SolverOptions::type, or the
+      // solver of a fallback (SolverOptions::fallback).
+      SolverType solver = SolverType::splitting_active_set;
+      // The solvers tried before it, each with its stop message, in order
+      // (empty when the first solver's answer is returned).
+      std::vector<std::string> fallbacks;
     };
 
     // Validate the problem (and the options: one-line std::invalid_argument

@@ -1,7 +1,8 @@
-// The per-element natural-map residual ||F_j|| (residual.h), which the
-// contact scenes write along the contact surface: hand-computed values on a
-// two-element problem, and its relation to the shared figure
-//   natural_map = sqrt( sum_j ||F_j||^2 ) / ( ||r||_2 + rho ||D||_2 ).
+// The per-element natural-map residual ||F_j|| / S(r) (residual.h), which
+// the contact scenes write along the contact surface: hand-computed values
+// on a two-element problem, and its relation to the shared figure
+//   natural_map = sqrt( sum_j ||F_j||^2 + sum_i E_i^2 ) / S(r),
+//   S(r) = ||r||_2 + rho ||D^+||_2.
 #include <dpana/contact/residual.h>
 
 #include <cmath>
@@ -11,7 +12,7 @@
 
 using namespace dpana_test;
 
-// Two uncoupled 2D elements, A = I (so rho = d n / trace(A) = 1), at the
+// Two uncoupled 2D elements, A = I (so rho_j = d / trace(A_jj) = 1), at the
 // tractions r = (0, 0 | -1, 0), which solve neither element:
 //
 // Element 1, mu = 0, D_1 = (1, 0): u_1 = (1, 0), the point
@@ -35,10 +36,12 @@ TEST(ElementResidual, HandComputedTwoElementProblem)
   const Eigen::Vector4d r(0.0, 0.0, -1.0, 0.0);
   const Eigen::VectorXd u = p.A * r + p.D;
 
+  // S = ||r|| + rho ||D^+|| = 1 + sqrt(1 + 0.25 + 4) (no gap in D).
+  const double          S = 1.0 + std::sqrt(5.25);
   const Eigen::VectorXd e = element_residuals(p, r, u);
   ASSERT_EQ(e.size(), 2);
-  EXPECT_NEAR(e[0], 1.0, 1e-15);
-  EXPECT_NEAR(e[1], std::sqrt(0.4), 1e-15);
+  EXPECT_NEAR(e[0], 1.0 / S, 1e-15);
+  EXPECT_NEAR(e[1], std::sqrt(0.4) / S, 1e-15);
 
   // The vector F_2 itself.
   const FrictionSet set(p);
@@ -50,7 +53,7 @@ TEST(ElementResidual, HandComputedTwoElementProblem)
   // The shared figure: sqrt(1 + 0.4) / (||r|| + rho ||D||), ||r|| = 1,
   // ||D|| = sqrt(1 + 0.25 + 4).
   EXPECT_NEAR(compute_residual(p, r, Eigen::VectorXd()).natural_map,
-              std::sqrt(1.4) / (1.0 + std::sqrt(5.25)),
+              std::sqrt(1.4) / S,
               1e-15);
 }
 
@@ -58,8 +61,8 @@ TEST(ElementResidual, HandComputedTwoElementProblem)
 
 // On random problems (2D interval, 3D disc and polygon) at perturbed
 // solutions, and on a problem with equality rows and rigid-mode amplitudes
-// alpha, the per-element values squared add up to the square of the shared
-// figure times its denominator.
+// alpha, the per-element values squared and the equality defect add up to
+// the square of the shared figure.
 namespace
 {
   void
@@ -70,13 +73,16 @@ namespace
     Eigen::VectorXd u = p.A * r + p.D;
     if (p.n_equalities() > 0)
       u += p.G.transpose() * alpha;
-    const double          rho    = residual_rho(p);
     const double          figure = compute_residual(p, r, alpha).natural_map;
     const Eigen::VectorXd e      = element_residuals(p, r, u);
     ASSERT_EQ(e.size(), p.n_elements());
-    const double global = figure * (r.norm() + rho * p.D.norm());
-    EXPECT_GT(global, 1e-6); // a point that is not a solution
-    EXPECT_NEAR(e.squaredNorm(), global * global, 1e-12 * global * global);
+    EXPECT_GT(figure, 1e-6); // a point that is not a solution
+    const double equality =
+      equality_defect(p, r) / residual_scale(p, residual_rho(p), r);
+    EXPECT_NEAR(e.squaredNorm() + equality * equality,
+                figure * figure,
+                1e-12 * figure * figure);
+    EXPECT_LE(e.maxCoeff(), figure);
     // The residual is spread over several elements, not concentrated in
     // one: the per-element split is not trivial.
     EXPECT_LT(e.maxCoeff(), e.norm() * (1.0 - 1e-3));

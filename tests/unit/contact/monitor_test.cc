@@ -18,21 +18,43 @@ namespace
     f.equilibrium = equilibrium;
     return f;
   }
+
+  // The monitor of an NSGS solve with tolerance 1e-8 on a small problem,
+  // its history and an iterate r.
+  class NsgsMonitor : public ::testing::Test
+  {
+  protected:
+    NsgsMonitor()
+      : p(random_problem(2, 3, 0.3, 1))
+      , o(tolerance(1e-8))
+      , monitor(p, o, "NSGS", "sweeps", history)
+      , r(Eigen::VectorXd::Ones(6))
+    {
+    }
+
+    static SolverOptions
+    tolerance(const double value)
+    {
+      SolverOptions options;
+      options.tolerance = value;
+      return options;
+    }
+
+    const ContactProblem  p;
+    const SolverOptions   o;
+    std::vector<double>   history;
+    ConvergenceMonitor    monitor;
+    const Eigen::VectorXd r;
+  };
 } // namespace
 
 
 
 // Converged at the tolerance, diverged on a non-finite residual, and every
 // observed residual in the history.
-TEST(Monitor, Verdicts)
+TEST_F(NsgsMonitor, Verdicts)
 {
-  const ContactProblem p = random_problem(2, 3, 0.3, 1);
-  SolverOptions        o;
-  o.tolerance = 1e-8;
-  std::vector<double>   history;
-  ConvergenceMonitor    monitor(p, o, "NSGS", "sweeps", history);
-  const Eigen::VectorXd r = Eigen::VectorXd::Ones(6);
-  using Verdict           = ConvergenceMonitor::Verdict;
+  using Verdict = ConvergenceMonitor::Verdict;
   EXPECT_EQ(monitor.observe(figures(1e-3), r), Verdict::iterate);
   EXPECT_EQ(monitor.observe(figures(1e-8), r), Verdict::converged);
   EXPECT_EQ(monitor.observe(figures(std::nan("")), r), Verdict::diverged);
@@ -86,4 +108,23 @@ TEST(Monitor, Stall)
   EXPECT_EQ(monitor.stall_message("cycling"),
             "splitting did not converge: no residual decrease in 3 "
             "iterations (cycling)");
+}
+
+
+
+// At the iteration cap the message says how far the solver is: the
+// residual, its mean rate per iteration and the iterations still needed at
+// that rate (residuals 1e-2, 1e-3, 1e-4: a factor 0.1 per sweep, 4 more to
+// 1e-8), or that it is not falling.
+TEST_F(NsgsMonitor, IterationLimitMessageGivesTheRate)
+{
+  for (const double x : {1e-2, 1e-3, 1e-4})
+    monitor.observe(figures(x), r);
+  EXPECT_EQ(monitor.iteration_limit_message(),
+            "NSGS: iteration limit reached (residual 1.00e-04, falling by a "
+            "factor 0.100000 per sweep: about 4 more sweeps needed)");
+  monitor.observe(figures(1e-2), r);
+  EXPECT_EQ(monitor.iteration_limit_message(),
+            "NSGS: iteration limit reached (residual 1.00e-02, not falling "
+            "over the last 3 sweeps)");
 }

@@ -36,7 +36,7 @@ TEST(Residual, ModifiedVelocityVanishesAtCoulombSolution)
   // The plain projection residual (associated law) does NOT vanish there:
   // u_N = 0 but u_T = 1.71, and r - Pi_K(r - rho u) != 0.
   const FrictionSet     set(p);
-  const double          rho = residual_rho(p);
+  const double          rho = residual_rho(p)[0];
   const Eigen::Vector2d u   = p.A * r + p.D;
   const Eigen::Vector2d x   = r - rho * u;
   Eigen::Vector2d       proj;
@@ -110,13 +110,22 @@ TEST(Residual, SeparateFiguresAndClassification)
   EXPECT_DOUBLE_EQ(f.complementarity, 2.0); // element 1: |-1 * -2|
   EXPECT_EQ(f.equilibrium, 0.0);
 
-  const Eigen::Vector4d r2(0.0, 0.0, -1.0, -0.1), r3(-1.0, 0.3, -1.0, 0.1);
+  // Element 1 with T = -0.1 inside the cone: u_T = 0.2 != 0, it moves, so
+  // it slips although its traction is inside; with T = -0.3 on the cone
+  // (u_T = 0) it slips too; element 0 with T = 0.3 = -mu N on the cone
+  // slips although u_T = 0; with T = 0.1 and u_T = 0 it sticks.
+  const Eigen::Vector4d r2(0.0, 0.0, -1.0, -0.1), r3(-1.0, 0.3, -1.0, -0.3);
   const auto            s2 = classify(p, r2, p.A * r2 + p.D, 1e-8);
   EXPECT_EQ(s2[0], ContactStatus::separated);
-  EXPECT_EQ(s2[1], ContactStatus::stick);
-  const auto s3 = classify(p, r3, p.A * r3 + p.D, 1e-8);
+  EXPECT_EQ(s2[1], ContactStatus::slip);
+  const Eigen::Vector4d u3(0.0, 0.0, -2.0, 0.0);
+  const auto            s3 = classify(p, r3, u3, 1e-8);
   EXPECT_EQ(s3[0], ContactStatus::slip);
-  EXPECT_EQ(s3[1], ContactStatus::stick);
+  EXPECT_EQ(s3[1], ContactStatus::slip);
+  const Eigen::Vector4d r4(-1.0, 0.1, -1.0, -0.1);
+  const auto            s4 = classify(p, r4, u3, 1e-8);
+  EXPECT_EQ(s4[0], ContactStatus::stick);
+  EXPECT_EQ(s4[1], ContactStatus::stick);
 }
 
 TEST(FrictionSetGeometry, ConeProjectionOptimality)

@@ -1,10 +1,31 @@
-// Cases where the D-PANA splitting does not converge: it must say so
-// (converged = false, a message, a residual that is the true one), and NSGS
-// must solve the problem.
+// Cases where the D-PANA splitting does not converge: alone (fallback off)
+// it must say so (converged = false, a message, a residual that is the true
+// one); NSGS must solve the problem, and so must the default (robust) mode
+// of the splitting, by its fallback, saying which solver answered.
 #include "contact_test_tools.h"
 #include <gtest/gtest.h>
 
 using namespace dpana_test;
+
+namespace
+{
+  // The default mode of the splitting solves the problem by a fallback
+  // solver, to the tolerance, and says so in the result and its message.
+  void
+  expect_fallback_solves(const ContactProblem &p, const SolverType type)
+  {
+    const SolverResult res = solve(p, options_for(type));
+    ASSERT_TRUE(res.converged) << to_string(type) << ": " << res.message;
+    EXPECT_LE(res.residual, 1e-10);
+    EXPECT_NE(res.solver, type);
+    ASSERT_FALSE(res.fallbacks.empty());
+    EXPECT_EQ(res.fallbacks.front().rfind(to_string(type) + ": ", 0), 0u)
+      << res.fallbacks.front();
+    EXPECT_NE(res.message.find("fallback after " + to_string(type)),
+              std::string::npos)
+      << res.message;
+  }
+} // namespace
 
 // One 2D element, A = [[1, 0.5], [0.5, 1]], D = (1, 10), mu = 3.
 // Exact solution (derived by hand): backward slip s = -1, T = mu N, and
@@ -30,6 +51,7 @@ TEST(SplittingFailure, TwoCycleOnOneElement)
     {
       SolverOptions o        = options_for(type);
       o.max_iterations       = 500;
+      o.fallback             = false;
       const SolverResult res = solve(p, o);
       EXPECT_FALSE(res.converged) << to_string(type);
       EXPECT_NE(res.message.find("did not converge"), std::string::npos)
@@ -42,6 +64,10 @@ TEST(SplittingFailure, TwoCycleOnOneElement)
       // The iterates alternate between the two points of the cycle.
       const double N = res.r[0];
       EXPECT_TRUE(std::abs(N) < 1e-12 || std::abs(N + 1.0) < 1e-12) << N;
+      expect_fallback_solves(p, type);
+      EXPECT_LE(
+        (solve(p, options_for(type)).r - exact).lpNorm<Eigen::Infinity>(),
+        1e-12);
     }
   for (const SolverType type : {SolverType::nsgs, SolverType::alart_curnier})
     {
@@ -76,9 +102,12 @@ TEST(SplittingFailure, CoupledCopies)
   for (const SolverType type :
        {SolverType::splitting_pgs, SolverType::splitting_active_set})
     {
-      const SolverResult res = solve(p, options_for(type));
+      SolverOptions o        = options_for(type);
+      o.fallback             = false;
+      const SolverResult res = solve(p, o);
       EXPECT_FALSE(res.converged) << to_string(type);
       EXPECT_FALSE(res.message.empty());
+      expect_fallback_solves(p, type);
     }
   const SolverResult res = solve(p, options_for(SolverType::nsgs));
   ASSERT_TRUE(res.converged) << res.message;
@@ -97,9 +126,12 @@ TEST(SplittingFailure, HardRandomProblem)
   for (const SolverType type :
        {SolverType::splitting_pgs, SolverType::splitting_active_set})
     {
-      const SolverResult res = solve(p, options_for(type));
+      SolverOptions o        = options_for(type);
+      o.fallback             = false;
+      const SolverResult res = solve(p, o);
       EXPECT_FALSE(res.converged) << to_string(type);
       EXPECT_FALSE(res.message.empty());
+      expect_fallback_solves(p, type);
     }
   SolverOptions plain             = options_for(SolverType::nsgs);
   plain.adaptive_relaxation       = false;
