@@ -4,6 +4,8 @@
 #ifndef dpana_condensation_parameters_h
 #define dpana_condensation_parameters_h
 
+#include <dpana/linear_algebra/last_block_ordering.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 namespace dpana
@@ -34,6 +36,8 @@ namespace dpana
      *     subsection Contact
      *       set Condensation method = schur
      *       set Columns per solve   = 256
+     *       set Schur ordering      = interior nested dissection
+     *       set Memory limit (GB)   = 0
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -43,17 +47,31 @@ namespace dpana
     {
       Method       method            = Method::schur;
       unsigned int columns_per_solve = 256;
+      /**
+       * The fill-reducing ordering of the factorisation of the Schur route
+       * (linear_algebra::LastBlockOrdering).
+       */
+      linear_algebra::LastBlockOrdering ordering =
+        linear_algebra::LastBlockOrdering::interior_nested_dissection;
+      /**
+       * The memory a run may use, in GB; 0: what the machine has (the
+       * resident memory of the run plus MemAvailable of /proc/meminfo).
+       * A condensation whose estimate (memory_estimate.h) exceeds it is
+       * refused before its factorisation.
+       */
+      double memory_limit_gb = 0;
 
       /**
-       * Declare the entries Condensation method and Columns per solve in the
-       * current subsection of @p prm.
+       * Declare the entries Condensation method, Columns per solve, Schur
+       * ordering and Memory limit (GB) in the current subsection of @p prm.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
-       * Read the entries Condensation method and Columns per solve from the
-       * current subsection of @p prm.
+       * Read the entries Condensation method, Columns per solve, Schur
+       * ordering and Memory limit (GB) from the current subsection of
+       * @p prm.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);

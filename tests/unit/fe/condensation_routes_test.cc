@@ -22,15 +22,18 @@ namespace
   using dpana::test::make_scene;
 
   // Body b of an assembled scene with a contact surface, condensed anew by
-  // the given method.
+  // the given method (and, for the Schur route, ordering).
   template <int dim>
   std::unique_ptr<condensation::Condenser<dim>>
-  condensed(scene::Scene<dim>         &s,
-            const unsigned int         b,
-            const condensation::Method method)
+  condensed(scene::Scene<dim>                      &s,
+            const unsigned int                      b,
+            const condensation::Method              method,
+            const linear_algebra::LastBlockOrdering ordering =
+              linear_algebra::LastBlockOrdering::interior_nested_dissection)
   {
     condensation::Parameters parameters;
-    parameters.method = method;
+    parameters.method   = method;
+    parameters.ordering = ordering;
     auto c = std::make_unique<condensation::Condenser<dim>>(s.body(b),
                                                             s.surface(b),
                                                             parameters);
@@ -45,43 +48,53 @@ namespace
   // The Schur route (the surface dofs ordered last, A = W^T W with W the
   // solve with the factor of the Schur complement) and the blocked solves
   // give the same A, s_o, G and e up to round-off (1e-12 relative), for every
-  // body of the scene, and the same recovered displacement.
+  // body of the scene and every ordering of the Schur route's
+  // factorisation, and the same recovered displacement.
   template <int dim>
   void
   expect_routes_agree(scene::Scene<dim> &s)
   {
     s.assemble();
     s.build_contact_surface();
+    using linear_algebra::LastBlockOrdering;
     for (unsigned int b = 0; b < s.n_bodies(); ++b)
-      {
-        const auto schur = condensed(s, b, condensation::Method::schur);
-        const auto blocked =
-          condensed(s, b, condensation::Method::blocked_solves);
-        const auto relative = [](const auto &x, const auto &y) {
-          return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
-        };
-        EXPECT_LT(relative(schur->compliance(), blocked->compliance()), 1e-12);
-        EXPECT_LT(relative(schur->load_term(), blocked->load_term()), 1e-12);
-        EXPECT_LT(relative(schur->equilibrium_matrix(),
-                           blocked->equilibrium_matrix()),
-                  1e-12);
-        EXPECT_LT(relative(schur->equilibrium_rhs(),
-                           blocked->equilibrium_rhs()),
-                  1e-12);
-        EXPECT_EQ(schur->fictitious_supports(), blocked->fictitious_supports());
-        EXPECT_EQ(schur->asymmetry(), 0.0);
-        EXPECT_GT(schur->factorization().schur_dofs().size(), 0u);
-        EXPECT_TRUE(schur->compliance() == schur->compliance().transpose());
+      for (const auto ordering :
+           {LastBlockOrdering::moved_last,
+            LastBlockOrdering::constrained_amd,
+            LastBlockOrdering::interior_nested_dissection})
+        {
+          SCOPED_TRACE(linear_algebra::to_string(ordering));
+          const auto schur =
+            condensed(s, b, condensation::Method::schur, ordering);
+          const auto blocked =
+            condensed(s, b, condensation::Method::blocked_solves);
+          const auto relative = [](const auto &x, const auto &y) {
+            return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
+          };
+          EXPECT_LT(relative(schur->compliance(), blocked->compliance()),
+                    1e-12);
+          EXPECT_LT(relative(schur->load_term(), blocked->load_term()), 1e-12);
+          EXPECT_LT(relative(schur->equilibrium_matrix(),
+                             blocked->equilibrium_matrix()),
+                    1e-12);
+          EXPECT_LT(relative(schur->equilibrium_rhs(),
+                             blocked->equilibrium_rhs()),
+                    1e-12);
+          EXPECT_EQ(schur->fictitious_supports(),
+                    blocked->fictitious_supports());
+          EXPECT_EQ(schur->asymmetry(), 0.0);
+          EXPECT_GT(schur->factorization().schur_dofs().size(), 0u);
+          EXPECT_TRUE(schur->compliance() == schur->compliance().transpose());
 
-        const Eigen::VectorXd r =
-          Eigen::VectorXd::LinSpaced(schur->compliance().rows(), -1.0, 1.0);
-        const Eigen::VectorXd alpha =
-          Eigen::VectorXd::Ones(schur->n_free_modes());
-        const auto u1 = schur->recover(r, alpha);
-        auto       u2 = blocked->recover(r, alpha);
-        u2 -= u1;
-        EXPECT_LT(u2.l2_norm(), 1e-12 * u1.l2_norm());
-      }
+          const Eigen::VectorXd r =
+            Eigen::VectorXd::LinSpaced(schur->compliance().rows(), -1.0, 1.0);
+          const Eigen::VectorXd alpha =
+            Eigen::VectorXd::Ones(schur->n_free_modes());
+          const auto u1 = schur->recover(r, alpha);
+          auto       u2 = blocked->recover(r, alpha);
+          u2 -= u1;
+          EXPECT_LT(u2.l2_norm(), 1e-12 * u1.l2_norm());
+        }
   }
 } // namespace
 
