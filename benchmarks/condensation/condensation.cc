@@ -40,6 +40,7 @@
 //                               [--box "M, H, M" ...] [--prm-dir DIR]
 //                               [--csv FILE] [--repeats N]
 
+#include <dpana/base/exceptions.h>
 #include <dpana/condensation/condenser.h>
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/run.h>
@@ -160,7 +161,7 @@ namespace
   measure(scene::Scene<dim>              &s,
           const unsigned int              b,
           const condensation::Parameters &parameters,
-          const unsigned int              repeats,
+          unsigned int                    repeats,
           const std::string              &a_file)
   {
     int channel[2];
@@ -317,6 +318,7 @@ namespace
           {
             condensation::Parameters p;
             p.ordering              = o;
+            p.memory_limit_gb       = analysis_only ? 1e-9 : 0.0;
             const Measurement     m = measure(*s, b, p, repeats, file);
             const Eigen::MatrixXd A = read_matrix(file);
             if (A0.size() == 0)

@@ -149,6 +149,15 @@ namespace dpana
           else
             cholesky.factorize(body.system_matrix(), constraints);
         }
+      catch (const std::length_error &error)
+        {
+          throw InputError(
+            body.name() + ": " + error.what() + " (" +
+            std::to_string(body.dof_handler().n_dofs()) +
+            " dofs, n_c = " + std::to_string(dim * surface.n_elements()) +
+            "); use a coarser mesh or larger contact "
+            "elements");
+        }
       catch (const linear_algebra::NotPositiveDefiniteError &)
         {
           throw InputError(body.name() +

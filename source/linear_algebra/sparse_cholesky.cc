@@ -313,16 +313,21 @@ namespace dpana
       std::vector<int> given =
         order_last_block(K_lower, is_last, last_ordering, impl->llt.cholmod());
       impl->llt.analyze_given(K_lower, given);
+      // A factor beyond CHOLMOD's 32-bit indices (a 3D body of a million
+      // dofs with 10^4 surface dofs last reaches it) is reported as
+      // std::length_error, which the condensation turns into an input error
+      // naming the sizes.
+      const int status = impl->llt.cholmod().status;
+      if (impl->llt.info() != Eigen::Success && status == CHOLMOD_TOO_LARGE)
+        throw std::length_error(
+          "the factor of " + std::to_string(K_lower.rows()) +
+          " unknowns would hold more than 2^31 numbers (17 GB), more than "
+          "CHOLMOD's 32-bit indices address");
       AssertThrow(impl->llt.info() == Eigen::Success,
                   dealii::ExcMessage(
                     "SparseCholesky: CHOLMOD's analysis with the given "
                     "ordering failed (CHOLMOD status " +
-                    std::to_string(impl->llt.cholmod().status) +
-                    (impl->llt.cholmod().status == CHOLMOD_TOO_LARGE ?
-                       ": the factor is too large for 32-bit indices)" :
-                     impl->llt.cholmod().status == CHOLMOD_OUT_OF_MEMORY ?
-                       ": out of memory)" :
-                       ")")));
+                    std::to_string(status) + ")"));
       AssertThrow(impl->llt.permutation() == given,
                   dealii::ExcMessage("SparseCholesky: CHOLMOD did not keep "
                                      "the given ordering."));

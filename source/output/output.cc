@@ -115,9 +115,10 @@ namespace dpana
 
       data_out.build_patches(body.mapping());
 
-      // Binary, zlib-compressed VTU (what ParaView reads fastest) at the
-      // fastest compression level: deal.II's default, the best compression,
-      // spends several times as long for files a fifth smaller.
+      // Binary, zlib-compressed VTU at the fastest compression level:
+      // deal.II's default, the best compression, took 6.9 times as long for
+      // a file 7 % smaller (1.04 M dofs, 2D: 82.9 s against 12.0 s for the
+      // whole output phase, 24.3 MB against 26.2 MB).
       dealii::DataOutBase::VtkFlags flags;
       flags.compression_level =
         dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
