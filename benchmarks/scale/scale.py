@@ -14,9 +14,10 @@ Scenes:
   receding      prm/scale/receding_3d_1M.prm: m x h x m subdivisions of the
                 block, one contact element per square of the contact face
                 (n_c = 3 m^2, n_Gamma about 3 (m+1)^2);
-  hertz_sphere  prm/hertz_sphere*.prm if present (a gmsh scene: its
-                `Global refinements` or `Contact refinements` set from the
-                size list); skipped with a note otherwise.
+  hertz_sphere  prm/hertz_sphere_rigid.prm if present: the sphere on a
+                rigid plane, its gmsh mesh at levels 2..4 (--full: ..5),
+                made by scripts/meshes/make_meshes.py in the run's folder;
+                skipped with a note otherwise.
 """
 import argparse
 import csv
@@ -49,30 +50,25 @@ def receding_cases(prm_dir, sizes, chosen=None):
 
 
 def sphere_cases(prm_dir, sizes, chosen=None):
-    """The 3D sphere on a plane, if its scenes are there."""
-    files = sorted(f for f in os.listdir(prm_dir)
-                   if f.startswith("hertz_sphere") and f.endswith(".prm"))
-    if not files:
-        print("scale.py: no prm/hertz_sphere*.prm: sphere scene skipped")
+    """The 3D sphere on a rigid plane, prm/hertz_sphere_rigid.prm, at
+    several levels of its gmsh mesh: its `# mesh: meshes/NAME.msh --level N`
+    line and its `Mesh file` are set to the level, and run_case() has the
+    mesh made by scripts/meshes/make_meshes.py before the run."""
+    scene = os.path.join(prm_dir, "hertz_sphere_rigid.prm")
+    if not os.path.exists(scene):
+        print("scale.py: no prm/hertz_sphere_rigid.prm: sphere scene skipped")
         return
-    levels = {"quick": [0, 1], "default": [0, 1, 2], "full": [0, 1, 2, 3]}
-    text = open(os.path.join(prm_dir, files[0])).read()
-    key = None
-    for k in ("Contact refinements", "Global refinements"):
-        if re.search(r"set %s\s*=" % k, text):
-            key = k
-            break
-    if key is None:
-        print("scale.py: %s has no refinement entry: skipped" % files[0])
+    text = open(scene).read()
+    if not re.search(r"^#\s*mesh:", text, re.M):
+        print("scale.py: %s has no '# mesh:' line: skipped" % scene)
         return
+    levels = {"quick": [2, 3], "default": [2, 3, 4], "full": [2, 3, 4, 5]}
     for level in levels[sizes]:
-        body = re.sub(r"set %s\s*=.*" % key, "set %s = %d" % (key, level), text)
-        # A gmsh mesh named relative to the scene file is found from prm/.
-        body = re.sub(r"(set Mesh file\s*=\s*)(\S+)",
-                      lambda mo: mo.group(1) + (mo.group(2) if os.path.isabs(
-                          mo.group(2)) else os.path.join(os.path.abspath(
-                              prm_dir), mo.group(2))), body)
-        yield "%s %s %d" % (files[0][:-4], key.split()[0].lower(), level), body
+        mesh = "meshes/hertz_sphere_L%d.msh" % level
+        body = re.sub(r"^#\s*mesh:.*$", "# mesh: %s --level %d" % (mesh, level),
+                      text, flags=re.M)
+        body = re.sub(r"set Mesh file\s*=.*", "set Mesh file = " + mesh, body)
+        yield "hertz_sphere level %d" % level, body
 
 
 def loadavg():
@@ -86,6 +82,13 @@ def run_case(dpana, label, text, out):
     text = re.sub(r"set Directory\s*=.*", "set Directory = output", text)
     prm = os.path.join(workdir, name + ".prm")
     open(prm, "w").write(text)
+    # Generated meshes ("# mesh:" lines) are made in the run's folder.
+    make_meshes = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                               "..", "..", "scripts", "meshes",
+                               "make_meshes.py")
+    if re.search(r"^#\s*mesh:", text, re.M) and os.path.exists(make_meshes):
+        subprocess.check_call([sys.executable, make_meshes, name + ".prm"],
+                              cwd=workdir)
     load_before = loadavg()
     start = time.time()
     cpu_start = resource.getrusage(resource.RUSAGE_CHILDREN)
