@@ -33,9 +33,20 @@
 // Times are the minimum over --repeats runs of the factorisation and the
 // condensation in the same child (default 1).
 //
-// Usage: condensation_benchmark [--quick | --full] [--prm-dir DIR]
+// With --orderings, the Schur route alone under each ordering of its
+// factorisation (linear_algebra::LastBlockOrdering): CHOLMOD's nnz(L) and
+// flop count, the times and the peak memory, one child each.
+//
+// --analysis-only stops each child after the symbolic analysis (the counts
+// without the factorisation). --box "M, H, M" replaces the scenes by the
+// scale scene prm/scale/receding_3d_1M.prm at these subdivisions.
+//
+// Usage: condensation_benchmark [--quick | --full]
+//                               [--orderings | --analysis-only]
+//                               [--box "M, H, M" ...] [--prm-dir DIR]
 //                               [--csv FILE] [--repeats N]
 
+#include <dpana/base/exceptions.h>
 #include <dpana/condensation/condenser.h>
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/run.h>
@@ -92,6 +103,8 @@ namespace
   {
     double       t_factor = 0, t_condense = 0, peak_mb = 0;
     unsigned int n_gamma = 0;
+    // CHOLMOD's analysis: nnz(L), stored numbers, flops.
+    double lnz = 0, entries = 0, flops = 0;
   };
 
   struct Row
@@ -154,7 +167,7 @@ namespace
   measure(scene::Scene<dim>              &s,
           const unsigned int              b,
           const condensation::Parameters &parameters,
-          const unsigned int              repeats,
+          unsigned int                    repeats,
           const std::string              &a_file)
   {
     int channel[2];
@@ -166,6 +179,27 @@ namespace
       {
         close(channel[0]);
         Measurement m;
+        if (parameters.memory_limit_gb > 0)
+          {
+            // The analysis only: the memory check refuses the tiny limit
+            // after CHOLMOD's symbolic analysis, whose counts stay.
+            condensation::Condenser<dim> c(s.body(b), s.surface(b), parameters);
+            const auto start = std::chrono::steady_clock::now();
+            try
+              {
+                c.factorize();
+              }
+            catch (const InputError &)
+              {
+              }
+            m.t_factor = seconds_since(start);
+            m.n_gamma  = c.factorization().analysis().n_last;
+            m.lnz      = c.factorization().analysis().factor_nonzeros;
+            m.entries  = c.factorization().analysis().factor_entries;
+            m.flops    = c.factorization().analysis().factor_flops;
+            std::ofstream(a_file, std::ios::binary);
+            repeats = 0;
+          }
         for (unsigned int k = 0; k < repeats; ++k)
           {
             condensation::Condenser<dim> c(s.body(b), s.surface(b), parameters);
@@ -182,6 +216,9 @@ namespace
                 m.t_condense = t_condense;
               }
             m.n_gamma = c.schur_factorization().schur_dofs().size();
+            m.lnz     = c.factorization().analysis().factor_nonzeros;
+            m.entries = c.factorization().analysis().factor_entries;
+            m.flops   = c.factorization().analysis().factor_flops;
             if (k + 1 == repeats)
               {
                 const Eigen::MatrixXd &A = c.compliance();
@@ -245,13 +282,13 @@ namespace
         row.setup_mb = peak_memory_mb();
         const std::string file =
           "/tmp/condensation_benchmark_" + std::to_string(getpid());
-        condensation::Parameters parameters;
-        parameters.method = condensation::Method::blocked_solves;
-        row.blocked = measure(*s, b, parameters, repeats, file + "_blocked");
-        parameters.method = condensation::Method::schur;
-        row.schur = measure(*s, b, parameters, repeats, file + "_schur");
-        parameters.backend = condensation::Backend::mumps;
-        row.mumps = measure(*s, b, parameters, repeats, file + "_mumps");
+        condensation::Parameters blocked, schur;
+        blocked.method = condensation::Method::blocked_solves;
+        row.blocked    = measure(*s, b, blocked, repeats, file + "_blocked");
+        row.schur      = measure(*s, b, schur, repeats, file + "_schur");
+        condensation::Parameters mumps = schur;
+        mumps.backend                  = condensation::Backend::mumps;
+        row.mumps = measure(*s, b, mumps, repeats, file + "_mumps");
         const Eigen::MatrixXd A_blocked = read_matrix(file + "_blocked");
         const Eigen::MatrixXd A_schur   = read_matrix(file + "_schur");
         const Eigen::MatrixXd A_mumps   = read_matrix(file + "_mumps");
@@ -263,6 +300,62 @@ namespace
         rows.push_back(row);
       }
     return rows;
+  }
+
+
+
+  // @sect3{The orderings of the Schur route}
+  //
+  // The factorisation with the surface last under each LastBlockOrdering,
+  // each in its own child: nnz(L), flops, times, and A against the first.
+  template <int dim>
+  void
+  compare_orderings(const Case                    &c,
+                    const parameters::FileOutline &outline,
+                    const unsigned int             repeats,
+                    const bool                     analysis_only)
+  {
+    using linear_algebra::LastBlockOrdering;
+    auto s = make_scene<dim>(c.file, outline, c.entries);
+    s->assemble();
+    s->build_contact_surface();
+    const std::string file =
+      "/tmp/condensation_benchmark_" + std::to_string(getpid());
+    for (unsigned int b = 0; b < s->n_bodies(); ++b)
+      {
+        Eigen::MatrixXd A0;
+        for (const auto o : {LastBlockOrdering::moved_last,
+                             LastBlockOrdering::constrained_amd,
+                             LastBlockOrdering::interior_nested_dissection})
+          {
+            condensation::Parameters p;
+            p.ordering              = o;
+            p.memory_limit_gb       = analysis_only ? 1e-9 : 0.0;
+            const Measurement     m = measure(*s, b, p, repeats, file);
+            const Eigen::MatrixXd A = read_matrix(file);
+            if (A0.size() == 0)
+              A0 = A;
+            const double d = A.size() == 0 ?
+                               0.0 :
+                               (A - A0).cwiseAbs().maxCoeff() /
+                                 std::max(A0.cwiseAbs().maxCoeff(), 1e-300);
+            std::printf("%-26s %4u %8u %6u %-26s %9.3e %9.3e %9.3e %8.3g "
+                        "%8.3g %7.0f %7.1e\n",
+                        c.label.c_str(),
+                        b + 1,
+                        s->body(b).dof_handler().n_dofs(),
+                        m.n_gamma,
+                        linear_algebra::to_string(o).c_str(),
+                        m.lnz,
+                        m.entries,
+                        m.flops,
+                        m.t_factor,
+                        m.t_condense,
+                        m.peak_mb,
+                        d);
+            std::fflush(stdout);
+          }
+      }
   }
 
 
@@ -347,8 +440,21 @@ namespace
   // and the 2D Hertz cylinder on a rigid plane (hertz_rigid_mu0.prm) with k
   // contact refinements.
   std::vector<Case>
-  cases(const std::string &mode, const std::string &prm_dir)
+  cases(const std::string              &mode,
+        const std::string              &prm_dir,
+        const std::vector<std::string> &boxes_given)
   {
+    if (!boxes_given.empty())
+      {
+        // The scale scene (prm/scale/receding_3d_1M.prm) at the given
+        // Subdivisions "m, h, m".
+        std::vector<Case> result;
+        for (const std::string &sub : boxes_given)
+          result.push_back({"scale " + sub,
+                            prm_dir + "/scale/receding_3d_1M.prm",
+                            {"Body 1/Geometry/Box/Subdivisions=" + sub}});
+        return result;
+      }
     std::vector<unsigned int> boxes = {16, 24}, hertz = {6, 7};
     if (mode == "quick")
       boxes = {8}, hertz = {5};
@@ -381,15 +487,23 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  std::string  mode    = "default";
-  std::string  csv     = "results.csv";
-  std::string  prm_dir = "prm";
-  unsigned int repeats = 1;
+  std::string              mode      = "default";
+  std::string              csv       = "results.csv";
+  std::string              prm_dir   = "prm";
+  unsigned int             repeats   = 1;
+  bool                     orderings = false, analysis_only = false;
+  std::vector<std::string> boxes;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
       if (arg == "--quick" || arg == "--full")
         mode = arg.substr(2);
+      else if (arg == "--orderings")
+        orderings = true;
+      else if (arg == "--analysis-only")
+        analysis_only = orderings = true;
+      else if (arg == "--box" && i + 1 < argc)
+        boxes.push_back(argv[++i]);
       else if (arg == "--csv" && i + 1 < argc)
         csv = argv[++i];
       else if (arg == "--prm-dir" && i + 1 < argc)
@@ -400,6 +514,7 @@ main(int argc, char **argv)
         {
           std::cerr << "condensation_benchmark: error: bad argument '" << arg
                     << "' (usage: condensation_benchmark [--quick | --full] "
+                       "[--orderings | --analysis-only] [--box 'M, H, M' ...] "
                        "[--prm-dir DIR] [--csv FILE] [--repeats N])"
                     << std::endl;
           return 1;
@@ -410,11 +525,41 @@ main(int argc, char **argv)
     {
       std::vector<Row> rows;
       const auto       start = std::chrono::steady_clock::now();
+      if (orderings)
+        {
+          std::printf("Orderings of the Schur route (surface last): nnz(L), "
+                      "numbers stored by the supernodal factor, flops of the "
+                      "factorisation; times in s, peak memory in MB; |dA| "
+                      "against the first ordering\n%-26s %4s %8s %6s %-26s "
+                      "%9s %9s %9s %8s %8s %7s %7s\n",
+                      "scene",
+                      "body",
+                      "n_dofs",
+                      "n_G",
+                      "ordering",
+                      "nnz(L)",
+                      "stored",
+                      "flops",
+                      "factor",
+                      "condense",
+                      "peakMB",
+                      "|dA|");
+          for (const Case &c : cases(mode, prm_dir, boxes))
+            {
+              const auto outline = parameters::scan_file(c.file);
+              if (outline.dimension == 2)
+                compare_orderings<2>(c, outline, repeats, analysis_only);
+              else
+                compare_orderings<3>(c, outline, repeats, analysis_only);
+            }
+          std::printf("total wall time %.1f s\n", seconds_since(start));
+          return 0;
+        }
       std::printf("Condensation by blocked solves and through the Schur "
                   "complement (CHOLMOD, MUMPS), side by side (times in s, "
                   "memory in MB)\n");
       print_header();
-      for (const Case &c : cases(mode, prm_dir))
+      for (const Case &c : cases(mode, prm_dir, boxes))
         {
           const auto outline = parameters::scan_file(c.file);
           const auto part    = outline.dimension == 2 ?

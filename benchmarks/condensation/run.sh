@@ -6,7 +6,9 @@
 #   ./benchmarks/condensation/run.sh --quick         small scenes (seconds)
 #   ./benchmarks/condensation/run.sh --full          up to 1.1 M dofs
 #   ./benchmarks/condensation/run.sh --out DIR ...   results into DIR
-# Other arguments are passed to the executable (e.g. --repeats N).
+# Other arguments are passed to the executable (e.g. --repeats N;
+# --orderings or --analysis-only [--box "M, H, M"]: the table of the
+# orderings of the Schur route into orderings.txt, no plot).
 # Output: results.csv, results.txt and condensation.png in
 # benchmarks/condensation/results/ (or DIR), printed at the end.
 set -euo pipefail
@@ -37,6 +39,14 @@ cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "${DPANA_JOBS:-2}" --target condensation_benchmark
 
 mkdir -p "$out"
+case " ${args[*]-} " in
+  *" --orderings "* | *" --analysis-only "*)
+    # The table of the orderings only: no csv, no plot.
+    "$build/benchmarks/condensation_benchmark" --prm-dir "$top/prm" \
+      "${args[@]}" | tee "$out/orderings.txt"
+    exit 0
+    ;;
+esac
 "$build/benchmarks/condensation_benchmark" --prm-dir "$top/prm" \
   --csv "$out/results.csv" \
   ${args[@]+"${args[@]}"} | tee "$out/results.txt"

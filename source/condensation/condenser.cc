@@ -3,11 +3,14 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/condensation/condenser.h>
+#include <dpana/linear_algebra/blas.h>
 #include <dpana/linear_algebra/mumps_schur.h>
 
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <numeric>
+#include <sstream>
 
 namespace dpana
 {
@@ -130,7 +133,8 @@ namespace dpana
       constraints.close();
 
       // The back end of the Schur route; the blocked solves factor with
-      // CHOLMOD alone (no dofs ordered last).
+      // CHOLMOD alone (no dofs ordered last). CHOLMOD's analysis is followed
+      // by the memory estimate, before the numerical factorisation.
       std::vector<unsigned int> gamma;
       if (parameters.method == Method::schur)
         {
@@ -138,6 +142,11 @@ namespace dpana
             assemble_coupling();
           gamma = surface_dofs();
         }
+      cholesky.set_analysis_check(
+        [this](const linear_algebra::SparseCholesky::Analysis &analysis) {
+          check_memory(analysis);
+        });
+      cholesky.set_last_block_ordering(parameters.ordering);
       if (parameters.backend == Backend::mumps)
         back_end = std::make_unique<linear_algebra::MumpsSchurFactorization>();
       else
@@ -146,6 +155,15 @@ namespace dpana
       try
         {
           back_end->factorize(body.system_matrix(), constraints, gamma);
+        }
+      catch (const std::length_error &error)
+        {
+          throw InputError(
+            body.name() + ": " + error.what() + " (" +
+            std::to_string(body.dof_handler().n_dofs()) +
+            " dofs, n_c = " + std::to_string(dim * surface.n_elements()) +
+            "); use a coarser mesh or larger contact "
+            "elements");
         }
       catch (const linear_algebra::NotPositiveDefiniteError &)
         {
@@ -167,6 +185,42 @@ namespace dpana
       e = Eigen::VectorXd::Zero(R.cols());
       for (const unsigned int i : free)
         e -= rhs[i] * R.row(i).transpose();
+    }
+
+
+
+    // @sect3{Memory estimate}
+    //
+    // After the symbolic analysis, before the numerical factorisation: the
+    // estimate of memory_estimate.h, for the blocked solves with their
+    // dense blocks of n_dofs x columns (right-hand sides, solutions, the
+    // extended copy) instead of W.
+    template <int dim>
+    void
+    Condenser<dim>::check_memory(
+      const linear_algebra::SparseCholesky::Analysis &analysis)
+    {
+      const unsigned int n_dofs = body.dof_handler().n_dofs();
+      const unsigned int n_c    = dim * surface.n_elements();
+      estimate                  = estimate_memory(analysis, n_dofs, n_c);
+      if (parameters.method == Method::blocked_solves)
+        estimate.dense +=
+          8.0 * 3.0 * n_dofs * std::min(parameters.columns_per_solve, n_c);
+      const double limit = memory_limit(parameters.memory_limit_gb);
+      if (estimate.total() <= limit)
+        return;
+      std::ostringstream message;
+      message << body.name() << ": the condensation would need "
+              << estimate.describe() << ", more than ";
+      if (parameters.memory_limit_gb > 0)
+        message << "Contact / Memory limit (GB) = "
+                << parameters.memory_limit_gb;
+      else
+        message << "the " << limit / 1e9
+                << " GB this machine has available (Contact / Memory limit "
+                   "(GB))";
+      message << "; use a coarser mesh or larger contact elements";
+      throw InputError(message.str());
     }
 
 
@@ -207,8 +261,10 @@ namespace dpana
     //
     // V_Gamma = M^T V on the unknowns of the last block, in the order of the
     // factor: a row of a constrained dof is folded into its masters (none
-    // for a support), then W_Gamma = L_22^{-1} V_Gamma in place (TRSM) and
-    // the lower triangle of A = W^T W by a symmetric rank update (SYRK).
+    // for a support). Its columns are taken in the order of their first
+    // nonzero row, so that W_Gamma = L_22^{-1} V_Gamma, computed in place,
+    // keeps the zeros above it (lower triangular L_22): the triangular solve
+    // and the product A = W^T W skip them.
     template <int dim>
     void
     Condenser<dim>::condense_through_schur_complement()
@@ -221,19 +277,54 @@ namespace dpana
       std::vector<int> position(V.rows(), -1);
       for (unsigned int k = 0; k < dofs.size(); ++k)
         position[dofs[k]] = k;
-      Eigen::MatrixXd W = Eigen::MatrixXd::Zero(dofs.size(), V.cols());
-      for (Eigen::Index c = 0; c < V.outerSize(); ++c)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(V, c); it; ++it)
-          if (!constraints.is_constrained(it.row()))
-            W(position[it.row()], c) += it.value();
-          else
-            for (const auto &[j, a] :
-                 *constraints.get_constraint_entries(it.row()))
-              W(position[j], c) += a * it.value();
+      Eigen::SparseMatrix<double> V_Gamma(dofs.size(), V.cols());
+      {
+        std::vector<Eigen::Triplet<double>> entries;
+        for (Eigen::Index c = 0; c < V.outerSize(); ++c)
+          for (Eigen::SparseMatrix<double>::InnerIterator it(V, c); it; ++it)
+            if (!constraints.is_constrained(it.row()))
+              entries.emplace_back(position[it.row()], c, it.value());
+            else
+              for (const auto &[j, a] :
+                   *constraints.get_constraint_entries(it.row()))
+                entries.emplace_back(position[j], c, a * it.value());
+        V_Gamma.setFromTriplets(entries.begin(), entries.end());
+      }
 
-      back_end->solve_schur_factor(W);
-      A.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
+      // The columns by first row (a column of V_Gamma without entries, if
+      // any, last), then W in that order.
+      std::vector<int> first(V.cols(), dofs.size());
+      for (Eigen::Index c = 0; c < V_Gamma.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(V_Gamma, c); it;
+             ++it)
+          first[c] = std::min<int>(first[c], it.row());
+      Eigen::PermutationMatrix<Eigen::Dynamic> order(V.cols());
+      std::iota(order.indices().begin(), order.indices().end(), 0);
+      std::stable_sort(order.indices().begin(),
+                       order.indices().end(),
+                       [&](const int i, const int j) {
+                         return first[i] < first[j];
+                       });
+      std::vector<int> first_rows(V.cols());
+      Eigen::MatrixXd  W = Eigen::MatrixXd::Zero(dofs.size(), V.cols());
+      for (Eigen::Index k = 0; k < W.cols(); ++k)
+        {
+          const int c   = order.indices()(k);
+          first_rows[k] = first[c];
+          for (Eigen::SparseMatrix<double>::InnerIterator it(V_Gamma, c); it;
+               ++it)
+            W(it.row(), k) = it.value();
+        }
+      V_Gamma.resize(0, 0);
+
+      back_end->solve_schur_factor(W, first_rows);
+      trapezoidal_gram(W, first_rows, A);
+      W.resize(0, 0);
+      // Back to the order of the contact unknowns: A = P A_sorted P^T, in
+      // place (Eigen follows the cycles of the permutation).
       A = A.selfadjointView<Eigen::Lower>();
+      A = order * A;
+      A = A * order.transpose();
     }
 
 
@@ -284,6 +375,50 @@ namespace dpana
       for (unsigned int i = 0; i < u.size(); ++i)
         x(i) = u[i];
       return V.transpose() * x;
+    }
+
+
+
+    // The lower triangle of A = W^T W for W whose column k vanishes above
+    // row first_rows[k] (increasing): in panels of columns, each panel's
+    // diagonal block by SYRK and the block below it by GEMM, over the rows
+    // from the panel's first row on only (the later columns vanish above
+    // it too).
+    template <int dim>
+    void
+    Condenser<dim>::trapezoidal_gram(const Eigen::MatrixXd  &W,
+                                     const std::vector<int> &first_rows,
+                                     Eigen::MatrixXd        &A)
+    {
+      const int    n = W.cols(), m = W.rows(), panel = 256;
+      const double one = 1.0, zero = 0.0;
+      for (int k0 = 0; k0 < n; k0 += panel)
+        {
+          const int     width = std::min(panel, n - k0);
+          const int     r0    = std::min(first_rows[k0], m);
+          const int     rows  = m - r0;
+          const int     below = n - k0 - width;
+          const double *Wk    = W.data() + std::size_t(k0) * m + r0;
+          double       *Ak    = A.data() + std::size_t(k0) * n + k0;
+          const int     ld    = A.rows();
+          if (rows == 0)
+            continue;
+          dsyrk_("L", "T", &width, &rows, &one, Wk, &m, &zero, Ak, &ld);
+          if (below > 0)
+            dgemm_("T",
+                   "N",
+                   &below,
+                   &width,
+                   &rows,
+                   &one,
+                   Wk + std::size_t(width) * m,
+                   &m,
+                   Wk,
+                   &m,
+                   &zero,
+                   Ak + width,
+                   &ld);
+        }
     }
 
 

@@ -35,6 +35,29 @@ namespace dpana
                         "Columns of V handed at once to the blocked sparse "
                         "Cholesky solves of the condensation (Condensation "
                         "method = blocked solves).");
+      prm.declare_entry(
+        "Schur ordering",
+        "interior nested dissection",
+        dealii::Patterns::Selection(
+          "interior nested dissection|constrained AMD|moved last"),
+        "The fill-reducing ordering of the factorisation of the Schur route, "
+        "the surface dofs last: 'interior nested dissection' (METIS on the "
+        "graph of the other dofs), 'constrained AMD' (CAMD on the whole "
+        "graph, the surface a second constraint set) or 'moved last' "
+        "(CHOLMOD's ordering of the whole matrix, the surface dofs moved to "
+        "the end). The result is the same up to round-off; the time and "
+        "memory of the factorisation differ (benchmarks/condensation).");
+      prm.declare_entry("Memory limit (GB)",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "The memory the run may use, in GB; 0: what the "
+                        "machine has (the run's resident memory plus "
+                        "MemAvailable of /proc/meminfo). After the symbolic "
+                        "analysis of each body's factorisation the memory of "
+                        "the factor, of the dense blocks of the condensation "
+                        "and of the contact solve is estimated; a run whose "
+                        "estimate exceeds the limit stops there with an "
+                        "error.");
     }
 
 
@@ -42,15 +65,23 @@ namespace dpana
     void
     Parameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      method  = prm.get("Condensation method") == "schur" ?
-                  Method::schur :
-                  Method::blocked_solves;
+      method            = prm.get("Condensation method") == "schur" ?
+                            Method::schur :
+                            Method::blocked_solves;
+      columns_per_solve = prm.get_integer("Columns per solve");
       backend = prm.get("Factorisation back end") == "mumps" ? Backend::mumps :
                                                                Backend::cholmod;
-      columns_per_solve = prm.get_integer("Columns per solve");
       if (backend == Backend::mumps && method != Method::schur)
         throw InputError("Contact / Factorisation back end = mumps needs "
                          "Contact / Condensation method = schur");
+      memory_limit_gb        = prm.get_double("Memory limit (GB)");
+      const std::string name = prm.get("Schur ordering");
+      for (const auto o :
+           {linear_algebra::LastBlockOrdering::moved_last,
+            linear_algebra::LastBlockOrdering::constrained_amd,
+            linear_algebra::LastBlockOrdering::interior_nested_dissection})
+        if (linear_algebra::to_string(o) == name)
+          ordering = o;
     }
   } // namespace condensation
 } // namespace dpana

@@ -85,6 +85,16 @@ namespace dpana
 
 
 
+    void
+    CholmodSchurFactorization::solve_schur_factor(
+      Eigen::MatrixXd        &W,
+      const std::vector<int> &first_rows) const
+    {
+      cholesky.solve_schur_factor(W, first_rows);
+    }
+
+
+
     Eigen::VectorXd
     CholmodSchurFactorization::solve(const Eigen::VectorXd &b) const
     {

@@ -53,11 +53,12 @@ namespace dpana
           c.postorder               = 0;
           this->m_cholmodFactor =
             cholmod_analyze_p(&A, perm.data(), nullptr, 0, &c);
-          c.nmethods                = nmethods;
-          c.method[0].ordering      = ordering;
-          c.postorder               = postorder;
-          this->m_isInitialized     = true;
-          this->m_info              = Eigen::Success;
+          c.nmethods            = nmethods;
+          c.method[0].ordering  = ordering;
+          c.postorder           = postorder;
+          this->m_isInitialized = true;
+          this->m_info =
+            this->m_cholmodFactor ? Eigen::Success : Eigen::NumericalIssue;
           this->m_analysisIsOk      = this->m_cholmodFactor != nullptr;
           this->m_factorizationIsOk = false;
         }
@@ -75,14 +76,31 @@ namespace dpana
         {
           return *this->m_cholmodFactor;
         }
+
+        // What the last analysis found (CHOLMOD keeps the counts of the
+        // ordering it selected in its workspace).
+        SparseCholesky::Analysis
+        analysis()
+        {
+          SparseCholesky::Analysis a;
+          const cholmod_factor    &L = *this->m_cholmodFactor;
+          const cholmod_common    &c = this->cholmod();
+          a.n_unknowns               = L.n;
+          a.factor_entries           = L.is_super ? double(L.xsize) : c.lnz;
+          a.factor_nonzeros          = c.lnz;
+          a.factor_flops             = c.fl;
+          return a;
+        }
       };
     } // namespace
 
 
     struct SparseCholesky::Impl
     {
-      SupernodalLLT llt;
-      bool          factorized = false;
+      SupernodalLLT                                         llt;
+      bool                                                  factorized = false;
+      Analysis                                              analysis;
+      std::function<void(const SparseCholesky::Analysis &)> check;
     };
 
 
@@ -91,6 +109,7 @@ namespace dpana
       : impl(std::make_unique<Impl>())
       , n_rows(0)
       , n_block(64)
+      , last_ordering(LastBlockOrdering::interior_nested_dissection)
     {
       // CHOLMOD prints its warnings (e.g. "not positive definite") itself
       // unless told not to; dpana reports them through exceptions instead.
@@ -214,13 +233,20 @@ namespace dpana
                   dealii::ExcMessage(
                     "SparseCholesky: there is nothing to factor (no free "
                     "degrees of freedom)."));
-      impl->llt.analyzePattern(K_lower);
-      AssertThrow(impl->llt.info() == Eigen::Success,
-                  dealii::ExcMessage(
-                    "SparseCholesky: CHOLMOD's symbolic analysis failed."));
       schur.clear();
-      if (!last.empty())
+      if (last.empty())
+        {
+          impl->llt.analyzePattern(K_lower);
+          AssertThrow(impl->llt.info() == Eigen::Success,
+                      dealii::ExcMessage(
+                        "SparseCholesky: CHOLMOD's symbolic analysis failed."));
+          impl->analysis          = impl->llt.analysis();
+          impl->analysis.ordering = "CHOLMOD";
+        }
+      else
         order_last(K_lower);
+      if (impl->check)
+        impl->check(impl->analysis);
       impl->llt.factorize(K_lower);
       if (impl->llt.info() != Eigen::Success)
         {
@@ -262,30 +288,38 @@ namespace dpana
 
 
 
-    // CHOLMOD's own fill-reducing ordering of the whole reduced matrix (the
-    // analysis just done), with the unknowns of the last block moved to the
-    // end in the order CHOLMOD gave them (a stable partition), is handed back
-    // to CHOLMOD as the given ordering.
+    // The ordering of the chosen kind (last_block_ordering.h) is handed to
+    // CHOLMOD as the given one.
     void
     SparseCholesky::order_last(const Eigen::SparseMatrix<double> &K_lower)
     {
-      const std::vector<int> perm = impl->llt.permutation();
-      std::vector<bool>      is_last(perm.size(), false);
+      std::vector<bool> is_last(K_lower.rows(), false);
       for (const unsigned int k : last)
         is_last[k] = true;
-      std::vector<int> given;
-      given.reserve(perm.size());
-      for (const int k : perm)
-        if (!is_last[k])
-          given.push_back(k);
-      for (const int k : perm)
-        if (is_last[k])
-          given.push_back(k);
+      std::vector<int> given =
+        order_last_block(K_lower, is_last, last_ordering, impl->llt.cholmod());
       impl->llt.analyze_given(K_lower, given);
-      AssertThrow(impl->llt.info() == Eigen::Success &&
-                    impl->llt.permutation() == given,
-                  dealii::ExcMessage("SparseCholesky: CHOLMOD's analysis "
-                                     "with the given ordering failed."));
+      // A factor beyond CHOLMOD's 32-bit indices (a 3D body of a million
+      // dofs with 10^4 surface dofs last reaches it) is reported as
+      // std::length_error, which the condensation turns into an input error
+      // naming the sizes.
+      const int status = impl->llt.cholmod().status;
+      if (impl->llt.info() != Eigen::Success && status == CHOLMOD_TOO_LARGE)
+        throw std::length_error(
+          "the factor of " + std::to_string(K_lower.rows()) +
+          " unknowns would hold more than 2^31 numbers (17 GB), more than "
+          "CHOLMOD's 32-bit indices address");
+      AssertThrow(impl->llt.info() == Eigen::Success,
+                  dealii::ExcMessage(
+                    "SparseCholesky: CHOLMOD's analysis with the given "
+                    "ordering failed (CHOLMOD status " +
+                    std::to_string(status) + ")"));
+      AssertThrow(impl->llt.permutation() == given,
+                  dealii::ExcMessage("SparseCholesky: CHOLMOD did not keep "
+                                     "the given ordering."));
+      impl->analysis          = impl->llt.analysis();
+      impl->analysis.n_last   = last.size();
+      impl->analysis.ordering = to_string(last_ordering);
       schur.resize(last.size());
       for (unsigned int k = 0; k < last.size(); ++k)
         schur[k] = free[given[given.size() - last.size() + k]];
@@ -293,89 +327,40 @@ namespace dpana
 
 
 
-    // The columns n0 = n - n_last .. n - 1 of the supernodal factor: each
-    // supernode s holds the columns super[s] .. super[s+1]-1 as a dense
-    // column-major block of nsrow = pi[s+1] - pi[s] rows, whose row indices
-    // are s[pi[s] ..] (the supernode's own columns first). Every row of a
-    // column j >= n0 is >= j, hence in the last block.
-    Eigen::MatrixXd
-    SparseCholesky::schur_factor() const
+    const cholmod_factor &
+    SparseCholesky::factor() const
     {
       AssertThrow(impl->factorized && !last.empty(),
                   dealii::ExcMessage(
                     "SparseCholesky: factorize_with_last() first."));
       const cholmod_factor &L = impl->llt.factor();
       AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
-      const int     n     = L.n;
-      const int     n0    = n - last.size();
-      const int    *super = static_cast<const int *>(L.super);
-      const int    *pi    = static_cast<const int *>(L.pi);
-      const int    *px    = static_cast<const int *>(L.px);
-      const int    *rows  = static_cast<const int *>(L.s);
-      const double *x     = static_cast<const double *>(L.x);
-
-      Eigen::MatrixXd L22 = Eigen::MatrixXd::Zero(last.size(), last.size());
-      for (std::size_t s = 0; s < L.nsuper; ++s)
-        {
-          if (super[s + 1] <= n0)
-            continue;
-          const int nsrow = pi[s + 1] - pi[s];
-          for (int j = std::max(super[s], n0); j < super[s + 1]; ++j)
-            {
-              const double *column = x + px[s] + (j - super[s]) * nsrow;
-              for (int k = j - super[s]; k < nsrow; ++k)
-                L22(rows[pi[s] + k] - n0, j - n0) = column[k];
-            }
-        }
-      return L22;
+      return L;
     }
 
 
 
-    // The forward substitution with L_22, supernode by supernode of the
-    // last block and in place: the rows of W of the supernode's columns are
-    // solved with its dense diagonal block (TRSM), then the product of its
-    // block below the diagonal with them (GEMM) is subtracted from the rows
-    // of W its row indices name. The columns of a supernode that straddles
-    // the start n0 of the block and lie before it are skipped: W vanishes
-    // on their rows.
     void
-    SparseCholesky::solve_schur_factor(Eigen::MatrixXd &W) const
+    SparseCholesky::set_last_block_ordering(const LastBlockOrdering ordering)
     {
-      AssertThrow(impl->factorized && !last.empty(),
-                  dealii::ExcMessage(
-                    "SparseCholesky: factorize_with_last() first."));
-      AssertDimension(W.rows(), last.size());
-      const cholmod_factor &L = impl->llt.factor();
-      AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
-      const int     n0    = L.n - last.size();
-      const int    *super = static_cast<const int *>(L.super);
-      const int    *pi    = static_cast<const int *>(L.pi);
-      const int    *px    = static_cast<const int *>(L.px);
-      const int    *rows  = static_cast<const int *>(L.s);
-      const double *x     = static_cast<const double *>(L.x);
-      using Block = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-      for (std::size_t s = 0; s < L.nsuper; ++s)
-        {
-          if (super[s + 1] <= n0)
-            continue;
-          const int   nscol = super[s + 1] - super[s];
-          const int   nsrow = pi[s + 1] - pi[s];
-          const int   first = std::max(super[s], n0);
-          const int   k0    = first - super[s];
-          const int   ncols = super[s + 1] - first;
-          const Block S(x + px[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
-          auto        Wd = W.middleRows(first - n0, ncols);
-          S.block(k0, k0, ncols, ncols)
-            .triangularView<Eigen::Lower>()
-            .solveInPlace(Wd);
-          if (nsrow == nscol)
-            continue;
-          const Eigen::MatrixXd update =
-            S.block(nscol, k0, nsrow - nscol, ncols) * Wd;
-          for (int k = 0; k < nsrow - nscol; ++k)
-            W.row(rows[pi[s] + nscol + k] - n0) -= update.row(k);
-        }
+      last_ordering = ordering;
+    }
+
+
+
+    void
+    SparseCholesky::set_analysis_check(
+      std::function<void(const Analysis &)> check)
+    {
+      impl->check = std::move(check);
+    }
+
+
+
+    const SparseCholesky::Analysis &
+    SparseCholesky::analysis() const
+    {
+      return impl->analysis;
     }
 
 

@@ -115,6 +115,15 @@ namespace dpana
 
       data_out.build_patches(body.mapping());
 
+      // Binary, zlib-compressed VTU at the fastest compression level:
+      // deal.II's default, the best compression, took 6.9 times as long for
+      // a file 7 % smaller (1.04 M dofs, 2D: 82.9 s against 12.0 s for the
+      // whole output phase, 24.3 MB against 26.2 MB).
+      dealii::DataOutBase::VtkFlags flags;
+      flags.compression_level =
+        dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+      data_out.set_flags(flags);
+
       std::ofstream out(filename);
       data_out.write_vtu(out);
       AssertThrow(out, dealii::ExcIO());

@@ -234,6 +234,10 @@ namespace dpana
                               "factorising " + bodies[b]->name());
             condensers[b]->factorize();
           }
+          if (!quiet)
+            std::cout << "        Memory estimate of " << bodies[b]->name()
+                      << ": " << condensers[b]->memory_estimate().describe()
+                      << std::endl;
           const auto phase =
             phase_log.phase("condensation", "condensing " + bodies[b]->name());
           condensers[b]->assemble_coupling();
@@ -429,6 +433,19 @@ namespace dpana
           summary["contact"]["friction_coefficient"] = law.friction;
           summary["contact"]["solver"] =
             contact::to_string(solver.options.type);
+          summary["memory_estimate_mb"] = nlohmann::json::array();
+          for (const auto &c : condensers)
+            {
+              const auto &m = c->memory_estimate();
+              summary["memory_estimate_mb"].push_back(
+                {{"n_dofs", m.n_dofs},
+                 {"n_gamma", m.n_gamma},
+                 {"n_c", m.n_c},
+                 {"before", m.current / 1e6},
+                 {"factor", m.factor / 1e6},
+                 {"dense", m.dense / 1e6},
+                 {"total", m.total() / 1e6}});
+            }
         }
       output::write_json(summary, directory + "/summary.json");
     }

@@ -79,14 +79,15 @@ if [ ! -d "$srcdir/$name.expected" ]; then
   echo "FAIL: neither $name.error nor $name.expected/ exists"
   exit 1
 fi
-# A JSON file is compared without its "timings" and "peak_memory_mb", which
+# A JSON file is compared without its "timings", "peak_memory_mb" and
+# "memory_estimate_mb" (which holds the resident memory of the run), which
 # change from run to run: both sides are rewritten without them, with sorted
 # keys, one value per line.
 without_timings() {
   python3 -c '
 import json, sys
 d = json.load(open(sys.argv[1]))
-for k in ("timings", "peak_memory_mb"):
+for k in ("timings", "peak_memory_mb", "memory_estimate_mb"):
     d.pop(k, None)
 print(json.dumps(d, indent=1, sort_keys=True))' "$1" > "$2"
 }

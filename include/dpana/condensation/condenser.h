@@ -5,6 +5,7 @@
 #define dpana_condensation_condenser_h
 
 #include <dpana/body/body.h>
+#include <dpana/condensation/memory_estimate.h>
 #include <dpana/condensation/parameters.h>
 #include <dpana/contact_surface/contact_surface.h>
 #include <dpana/linear_algebra/schur_factorization.h>
@@ -205,6 +206,16 @@ namespace dpana
       {
         return cholesky;
       }
+      /**
+       * The memory estimate made by factorize() after the symbolic analysis
+       * (memory_estimate.h); factorize() refuses to go on, with an
+       * InputError, if it exceeds Parameters::memory_limit_gb.
+       */
+      const MemoryEstimate &
+      memory_estimate() const
+      {
+        return estimate;
+      }
 
       /**
        * The factorisation behind the load, the recovery and the Schur route,
@@ -228,6 +239,22 @@ namespace dpana
        */
       void
       condense_through_schur_complement();
+
+      /**
+       * Estimate the memory of the run from @p analysis into #estimate and
+       * throw an InputError if it exceeds the limit.
+       */
+      void
+      check_memory(const linear_algebra::SparseCholesky::Analysis &analysis);
+
+      /**
+       * The lower triangle of @p A = W^T W, for @p W whose column k
+       * vanishes above row first_rows[k] (increasing).
+       */
+      static void
+      trapezoidal_gram(const Eigen::MatrixXd  &W,
+                       const std::vector<int> &first_rows,
+                       Eigen::MatrixXd        &A);
 
       /**
        * A = V^T Z, Z by blocked solves, then symmetrised.
@@ -255,6 +282,7 @@ namespace dpana
       Eigen::MatrixXd G;
       Eigen::VectorXd e;
       double          relative_asymmetry = 0;
+      MemoryEstimate  estimate;
     };
   } // namespace condensation
 } // namespace dpana

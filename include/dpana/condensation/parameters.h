@@ -4,6 +4,8 @@
 #ifndef dpana_condensation_parameters_h
 #define dpana_condensation_parameters_h
 
+#include <dpana/linear_algebra/last_block_ordering.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 namespace dpana
@@ -47,6 +49,8 @@ namespace dpana
      *       set Condensation method    = schur
      *       set Factorisation back end = cholmod
      *       set Columns per solve      = 256
+     *       set Schur ordering         = interior nested dissection
+     *       set Memory limit (GB)      = 0
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -59,18 +63,33 @@ namespace dpana
       Method       method            = Method::schur;
       Backend      backend           = Backend::cholmod;
       unsigned int columns_per_solve = 256;
+      /**
+       * The fill-reducing ordering of the factorisation of the Schur route
+       * (linear_algebra::LastBlockOrdering).
+       */
+      linear_algebra::LastBlockOrdering ordering =
+        linear_algebra::LastBlockOrdering::interior_nested_dissection;
+      /**
+       * The memory a run may use, in GB; 0: what the machine has (the
+       * resident memory of the run plus MemAvailable of /proc/meminfo).
+       * A condensation whose estimate (memory_estimate.h) exceeds it is
+       * refused before its factorisation.
+       */
+      double memory_limit_gb = 0;
 
       /**
-       * Declare the entries Condensation method, Factorisation back end and
-       * Columns per solve in the current subsection of @p prm.
+       * Declare the entries Condensation method, Factorisation back end,
+       * Columns per solve, Schur ordering and Memory limit (GB) in the
+       * current subsection of @p prm.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
-       * Read the entries Condensation method, Factorisation back end and
-       * Columns per solve from the current subsection of @p prm. Throws an
-       * InputError for the back end mumps with the blocked solves.
+       * Read the entries Condensation method, Factorisation back end,
+       * Columns per solve, Schur ordering and Memory limit (GB) from the
+       * current subsection of @p prm. Throws an InputError for the back end
+       * mumps with the blocked solves.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);

@@ -74,6 +74,8 @@ namespace dpana
       const std::vector<unsigned int> &
       schur_dofs() const override;
 
+      using SchurFactorization::solve_schur_factor;
+
       void
       solve_schur_factor(Eigen::MatrixXd &W) const override;
 

@@ -78,6 +78,20 @@ namespace dpana
       solve_schur_factor(Eigen::MatrixXd &W) const = 0;
 
       /**
+       * solve_schur_factor() for a @p W whose column j vanishes in the rows
+       * before first_rows[j], @p first_rows increasing. As $L_S$ is lower
+       * triangular, W stays zero there; a back end may skip that work. The
+       * default ignores @p first_rows.
+       */
+      virtual void
+      solve_schur_factor(Eigen::MatrixXd        &W,
+                         const std::vector<int> &first_rows) const
+      {
+        (void)first_rows;
+        solve_schur_factor(W);
+      }
+
+      /**
        * $u = M K_r^{-1} M^T b$ for a full-length vector of nodal forces
        * $b$: the displacement that satisfies the homogeneous constraints.
        */
@@ -154,6 +168,10 @@ namespace dpana
 
       void
       solve_schur_factor(Eigen::MatrixXd &W) const override;
+
+      void
+      solve_schur_factor(Eigen::MatrixXd        &W,
+                         const std::vector<int> &first_rows) const override;
 
       Eigen::VectorXd
       solve(const Eigen::VectorXd &b) const override;

@@ -4,6 +4,8 @@
 #ifndef dpana_linear_algebra_sparse_cholesky_h
 #define dpana_linear_algebra_sparse_cholesky_h
 
+#include <dpana/linear_algebra/last_block_ordering.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -11,6 +13,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -88,6 +91,27 @@ namespace dpana
       operator=(const SparseCholesky &) = delete;
 
       /**
+       * What CHOLMOD's symbolic analysis tells of the factorisation before
+       * it is computed.
+       */
+      struct Analysis
+      {
+        /// Unknowns factored.
+        unsigned int n_unknowns = 0;
+        /// Unknowns of the last block (0 without factorize_with_last()).
+        unsigned int n_last = 0;
+        /// Numbers the supernodal factor stores (its dense supernodes,
+        /// zeros of the amalgamation included): 8 bytes each.
+        double factor_entries = 0;
+        /// Nonzeros of L proper (without the amalgamation's zeros).
+        double factor_nonzeros = 0;
+        /// Floating point operations of the factorisation.
+        double factor_flops = 0;
+        /// The ordering: "CHOLMOD" or to_string(LastBlockOrdering).
+        std::string ordering;
+      };
+
+      /**
        * Factor the whole matrix @p K. Only its lower triangle is read; the
        * matrix must be symmetric. Throws NotPositiveDefiniteError if it is
        * not positive definite.
@@ -133,6 +157,29 @@ namespace dpana
                           const std::vector<unsigned int>         &last_dofs);
 
       /**
+       * The ordering factorize_with_last() uses (default: the nested
+       * dissection of the interior, LastBlockOrdering documents the
+       * choices; benchmarks/condensation compares them).
+       */
+      void
+      set_last_block_ordering(const LastBlockOrdering ordering);
+
+      /**
+       * A function called after the symbolic analysis of every
+       * factorisation and before the numerical one, with what the analysis
+       * found. It may throw to stop before the expensive part (the memory
+       * estimate of a contact run does).
+       */
+      void
+      set_analysis_check(std::function<void(const Analysis &)> check);
+
+      /**
+       * The symbolic analysis of the last factorisation.
+       */
+      const Analysis &
+      analysis() const;
+
+      /**
        * The dense lower triangular $L_{22}$ of factorize_with_last(): row
        * and column k belong to the degree of freedom schur_dofs()[k]. A
        * copy of $n_\Gamma^2$ numbers, for checks; the condensation uses
@@ -148,6 +195,18 @@ namespace dpana
        */
       void
       solve_schur_factor(Eigen::MatrixXd &W) const;
+
+      /**
+       * solve_schur_factor() for a @p W whose column j vanishes in the rows
+       * before first_rows[j], @p first_rows increasing: a supernode of
+       * $L_{22}$ then only works on the columns that have begun by its last
+       * row (W stays zero above first_rows[j], as $L_{22}$ is lower
+       * triangular). For columns spread evenly over the rows this does a
+       * third of the work of the full solve.
+       */
+      void
+      solve_schur_factor(Eigen::MatrixXd        &W,
+                         const std::vector<int> &first_rows) const;
 
       /**
        * The free degrees of freedom of the last block, in the order of the
@@ -255,6 +314,12 @@ namespace dpana
       factorize_lower(const Eigen::SparseMatrix<double> &K_lower);
 
       /**
+       * CHOLMOD's supernodal factor of factorize_with_last().
+       */
+      const cholmod_factor &
+      factor() const;
+
+      /**
        * Analyse again with the unknowns of #last at the end.
        */
       void
@@ -285,6 +350,7 @@ namespace dpana
       // and their degrees of freedom in the order of the factor.
       std::vector<unsigned int> last;
       std::vector<unsigned int> schur;
+      LastBlockOrdering         last_ordering;
     };
   } // namespace linear_algebra
 } // namespace dpana

@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "scene_test_tools.h"
 #include <gtest/gtest.h>
@@ -23,19 +24,25 @@ namespace
   using dpana::test::hertz_prm;
   using dpana::test::make_scene;
 
+  using linear_algebra::LastBlockOrdering;
+
   // Body b of an assembled scene with a contact surface, condensed anew by
-  // the given method and back end.
+  // the given method and back end (and, for CHOLMOD's Schur route, the
+  // ordering of its factorisation).
   template <int dim>
   std::unique_ptr<condensation::Condenser<dim>>
   condensed(
     scene::Scene<dim>          &s,
     const unsigned int          b,
     const condensation::Method  method,
-    const condensation::Backend backend = condensation::Backend::cholmod)
+    const condensation::Backend backend = condensation::Backend::cholmod,
+    const LastBlockOrdering     ordering =
+      LastBlockOrdering::interior_nested_dissection)
   {
     condensation::Parameters parameters;
-    parameters.method  = method;
-    parameters.backend = backend;
+    parameters.method   = method;
+    parameters.backend  = backend;
+    parameters.ordering = ordering;
     auto c = std::make_unique<condensation::Condenser<dim>>(s.body(b),
                                                             s.surface(b),
                                                             parameters);
@@ -54,7 +61,8 @@ namespace
   // solve with the factor of the Schur complement), by the back end
   // @p backend, and a second condensation (@p other_method by
   // @p other_backend) give the same A, s_o, G and e up to round-off (1e-12
-  // relative), for every body of the scene, and the same recovered
+  // relative), for every body of the scene and, with CHOLMOD, every
+  // ordering of the Schur route's factorisation, and the same recovered
   // displacement.
   template <int dim>
   void
@@ -65,34 +73,43 @@ namespace
   {
     s.assemble();
     s.build_contact_surface();
+    std::vector<LastBlockOrdering> orderings = {
+      LastBlockOrdering::interior_nested_dissection};
+    if (backend == Backend::cholmod)
+      orderings = {LastBlockOrdering::moved_last,
+                   LastBlockOrdering::constrained_amd,
+                   LastBlockOrdering::interior_nested_dissection};
     for (unsigned int b = 0; b < s.n_bodies(); ++b)
-      {
-        const auto schur    = condensed(s, b, Method::schur, backend);
-        const auto other    = condensed(s, b, other_method, other_backend);
-        const auto relative = [](const auto &x, const auto &y) {
-          return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
-        };
-        EXPECT_LT(relative(schur->compliance(), other->compliance()), 1e-12);
-        EXPECT_LT(relative(schur->load_term(), other->load_term()), 1e-12);
-        EXPECT_LT(relative(schur->equilibrium_matrix(),
-                           other->equilibrium_matrix()),
-                  1e-12);
-        EXPECT_LT(relative(schur->equilibrium_rhs(), other->equilibrium_rhs()),
-                  1e-12);
-        EXPECT_EQ(schur->fictitious_supports(), other->fictitious_supports());
-        EXPECT_EQ(schur->asymmetry(), 0.0);
-        EXPECT_GT(schur->schur_factorization().schur_dofs().size(), 0u);
-        EXPECT_TRUE(schur->compliance() == schur->compliance().transpose());
+      for (const auto ordering : orderings)
+        {
+          SCOPED_TRACE(linear_algebra::to_string(ordering));
+          const auto schur = condensed(s, b, Method::schur, backend, ordering);
+          const auto other = condensed(s, b, other_method, other_backend);
+          const auto relative = [](const auto &x, const auto &y) {
+            return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
+          };
+          EXPECT_LT(relative(schur->compliance(), other->compliance()), 1e-12);
+          EXPECT_LT(relative(schur->load_term(), other->load_term()), 1e-12);
+          EXPECT_LT(relative(schur->equilibrium_matrix(),
+                             other->equilibrium_matrix()),
+                    1e-12);
+          EXPECT_LT(relative(schur->equilibrium_rhs(),
+                             other->equilibrium_rhs()),
+                    1e-12);
+          EXPECT_EQ(schur->fictitious_supports(), other->fictitious_supports());
+          EXPECT_EQ(schur->asymmetry(), 0.0);
+          EXPECT_GT(schur->schur_factorization().schur_dofs().size(), 0u);
+          EXPECT_TRUE(schur->compliance() == schur->compliance().transpose());
 
-        const Eigen::VectorXd r =
-          Eigen::VectorXd::LinSpaced(schur->compliance().rows(), -1.0, 1.0);
-        const Eigen::VectorXd alpha =
-          Eigen::VectorXd::Ones(schur->n_free_modes());
-        const auto u1 = schur->recover(r, alpha);
-        auto       u2 = other->recover(r, alpha);
-        u2 -= u1;
-        EXPECT_LT(u2.l2_norm(), 1e-12 * u1.l2_norm());
-      }
+          const Eigen::VectorXd r =
+            Eigen::VectorXd::LinSpaced(schur->compliance().rows(), -1.0, 1.0);
+          const Eigen::VectorXd alpha =
+            Eigen::VectorXd::Ones(schur->n_free_modes());
+          const auto u1 = schur->recover(r, alpha);
+          auto       u2 = other->recover(r, alpha);
+          u2 -= u1;
+          EXPECT_LT(u2.l2_norm(), 1e-12 * u1.l2_norm());
+        }
   }
 
   // The Schur route of CHOLMOD against the blocked solves.

@@ -25,7 +25,9 @@
 
 namespace
 {
+  using dpana::linear_algebra::LastBlockOrdering;
   using dpana::linear_algebra::SparseCholesky;
+  using dpana::linear_algebra::to_string;
 
   // The five-point Laplacian on an n x n grid with Dirichlet conditions plus
   // a shift: a symmetric positive definite sparse matrix with a known
@@ -216,6 +218,110 @@ TEST(SparseCholesky, ReducedSystemMatchesExplicitElimination)
 
 
 
+namespace
+{
+  void
+  check_last_block(const LastBlockOrdering ordering)
+  {
+    const unsigned int n = 12, N = n * n;
+    TestMatrix         A(n, 0.0);
+
+    dealii::AffineConstraints<double> constraints;
+    constraints.add_line(N - 1);
+    constraints.add_line(7 * n + 5);
+    constraints.add_entry(7 * n + 5, 7 * n + 6, 1.0);
+    constraints.close();
+    const CondensedSystem system(A, constraints, Eigen::VectorXd::Zero(N));
+    const auto           &K = system.K;
+
+    std::vector<unsigned int> surface;
+    for (unsigned int j = 0; j < n; ++j)
+      surface.push_back(j);
+    surface.push_back(4 * n + 3);
+    surface.push_back(7 * n + 5);
+    surface.push_back(N - 1);
+
+    SparseCholesky cholesky;
+    cholesky.set_last_block_ordering(ordering);
+    cholesky.factorize_with_last(K, constraints, surface);
+    EXPECT_EQ(cholesky.analysis().ordering, to_string(ordering));
+    EXPECT_EQ(cholesky.analysis().n_last, n + 2);
+    const auto &dofs = cholesky.schur_dofs();
+    ASSERT_EQ(dofs.size(), n + 2);
+    std::vector<unsigned int> sorted(dofs);
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<unsigned int> expected(surface.begin(), surface.begin() + n);
+    expected.push_back(4 * n + 3);
+    expected.push_back(7 * n + 6);
+    EXPECT_EQ(sorted, expected);
+
+    // The reduced matrix and its Schur complement on the surface, dense.
+    const auto      &free = cholesky.free_dofs();
+    Eigen::MatrixXd  M    = Eigen::MatrixXd::Zero(N, free.size());
+    std::vector<int> position(N, -1);
+    for (unsigned int k = 0; k < free.size(); ++k)
+      {
+        M(free[k], k)     = 1.0;
+        position[free[k]] = k;
+      }
+    M.row(7 * n + 5)          = M.row(7 * n + 6);
+    const Eigen::MatrixXd K_r = M.transpose() * A.dense * M;
+    std::vector<int>      is_surface(free.size(), -1), interior;
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      is_surface[position[dofs[k]]] = k;
+    for (unsigned int k = 0; k < free.size(); ++k)
+      if (is_surface[k] < 0)
+        interior.push_back(k);
+    const unsigned int ng = dofs.size(), ni = interior.size();
+    Eigen::MatrixXd    K_GG(ng, ng), K_GI(ng, ni), K_II(ni, ni);
+    for (unsigned int a = 0; a < ng; ++a)
+      {
+        for (unsigned int b = 0; b < ng; ++b)
+          K_GG(a, b) = K_r(position[dofs[a]], position[dofs[b]]);
+        for (unsigned int b = 0; b < ni; ++b)
+          K_GI(a, b) = K_r(position[dofs[a]], interior[b]);
+      }
+    for (unsigned int a = 0; a < ni; ++a)
+      for (unsigned int b = 0; b < ni; ++b)
+        K_II(a, b) = K_r(interior[a], interior[b]);
+    const Eigen::MatrixXd S =
+      K_GG - K_GI * K_II.llt().solve(Eigen::MatrixXd(K_GI.transpose()));
+    const Eigen::MatrixXd L_S = S.llt().matrixL();
+
+    const Eigen::MatrixXd L22 = cholesky.schur_factor();
+    EXPECT_LT((L22 - L_S).norm(), 1e-12 * L_S.norm());
+    EXPECT_EQ(
+      Eigen::MatrixXd(L22.triangularView<Eigen::StrictlyUpper>()).norm(), 0.0);
+
+    // The forward substitution on the supernodes equals the dense one.
+    const Eigen::MatrixXd B = random_matrix(ng, 5);
+    Eigen::MatrixXd       W = B;
+    cholesky.solve_schur_factor(W);
+    const Eigen::MatrixXd W_reference =
+      L_S.triangularView<Eigen::Lower>().solve(B);
+    EXPECT_LT((W - W_reference).norm(), 1e-12 * W_reference.norm());
+
+    // Columns that begin at rows 0, 3, 3, 9 and ng - 1 (zeros above).
+    const std::vector<int> first_rows  = {0, 3, 3, 9, int(ng) - 1};
+    Eigen::MatrixXd        B_trapezoid = B;
+    for (unsigned int j = 0; j < first_rows.size(); ++j)
+      B_trapezoid.col(j).head(first_rows[j]).setZero();
+    Eigen::MatrixXd W_trapezoid = B_trapezoid;
+    cholesky.solve_schur_factor(W_trapezoid, first_rows);
+    const Eigen::MatrixXd W_trapezoid_reference =
+      L_S.triangularView<Eigen::Lower>().solve(B_trapezoid);
+    EXPECT_LT((W_trapezoid - W_trapezoid_reference).norm(),
+              1e-12 * W_trapezoid_reference.norm());
+
+    const Eigen::MatrixXd b           = random_matrix(N, 3);
+    const Eigen::MatrixXd u           = cholesky.solve(b);
+    const Eigen::MatrixXd u_reference = M * K_r.llt().solve(M.transpose() * b);
+    EXPECT_LT((u - u_reference).norm(), 1e-12 * u_reference.norm());
+  }
+} // namespace
+
+
+
 // With the unknowns of a surface ordered last (factorize_with_last()), the
 // last diagonal block L_22 of the factor is the Cholesky factor of the Schur
 // complement S = K_GG - K_GI K_II^{-1} K_IG, checked against a dense
@@ -223,88 +329,18 @@ TEST(SparseCholesky, ReducedSystemMatchesExplicitElimination)
 // schur_dofs(). The surface: the first grid row (as a contact surface on the
 // boundary) and two scattered interior unknowns, one of them a constrained
 // dof standing for its masters, one a Dirichlet dof standing for none. The
-// solve with this ordering stays the plain K_r^{-1} b.
+// solve with this ordering stays the plain K_r^{-1} b. Every ordering of
+// LastBlockOrdering; the solve that skips the leading zeros of the columns
+// (first_rows) equals the dense one too.
 TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
 {
-  const unsigned int n = 12, N = n * n;
-  TestMatrix         A(n, 0.0);
-
-  dealii::AffineConstraints<double> constraints;
-  constraints.add_line(N - 1);
-  constraints.add_line(7 * n + 5);
-  constraints.add_entry(7 * n + 5, 7 * n + 6, 1.0);
-  constraints.close();
-  const CondensedSystem system(A, constraints, Eigen::VectorXd::Zero(N));
-  const auto           &K = system.K;
-
-  std::vector<unsigned int> surface;
-  for (unsigned int j = 0; j < n; ++j)
-    surface.push_back(j);
-  surface.push_back(4 * n + 3);
-  surface.push_back(7 * n + 5);
-  surface.push_back(N - 1);
-
-  SparseCholesky cholesky;
-  cholesky.factorize_with_last(K, constraints, surface);
-  const auto &dofs = cholesky.schur_dofs();
-  ASSERT_EQ(dofs.size(), n + 2);
-  std::vector<unsigned int> sorted(dofs);
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<unsigned int> expected(surface.begin(), surface.begin() + n);
-  expected.push_back(4 * n + 3);
-  expected.push_back(7 * n + 6);
-  EXPECT_EQ(sorted, expected);
-
-  // The reduced matrix and its Schur complement on the surface, dense.
-  const auto      &free = cholesky.free_dofs();
-  Eigen::MatrixXd  M    = Eigen::MatrixXd::Zero(N, free.size());
-  std::vector<int> position(N, -1);
-  for (unsigned int k = 0; k < free.size(); ++k)
+  for (const auto ordering : {LastBlockOrdering::moved_last,
+                              LastBlockOrdering::constrained_amd,
+                              LastBlockOrdering::interior_nested_dissection})
     {
-      M(free[k], k)     = 1.0;
-      position[free[k]] = k;
+      SCOPED_TRACE(to_string(ordering));
+      check_last_block(ordering);
     }
-  M.row(7 * n + 5)          = M.row(7 * n + 6);
-  const Eigen::MatrixXd K_r = M.transpose() * A.dense * M;
-  std::vector<int>      is_surface(free.size(), -1), interior;
-  for (unsigned int k = 0; k < dofs.size(); ++k)
-    is_surface[position[dofs[k]]] = k;
-  for (unsigned int k = 0; k < free.size(); ++k)
-    if (is_surface[k] < 0)
-      interior.push_back(k);
-  const unsigned int ng = dofs.size(), ni = interior.size();
-  Eigen::MatrixXd    K_GG(ng, ng), K_GI(ng, ni), K_II(ni, ni);
-  for (unsigned int a = 0; a < ng; ++a)
-    {
-      for (unsigned int b = 0; b < ng; ++b)
-        K_GG(a, b) = K_r(position[dofs[a]], position[dofs[b]]);
-      for (unsigned int b = 0; b < ni; ++b)
-        K_GI(a, b) = K_r(position[dofs[a]], interior[b]);
-    }
-  for (unsigned int a = 0; a < ni; ++a)
-    for (unsigned int b = 0; b < ni; ++b)
-      K_II(a, b) = K_r(interior[a], interior[b]);
-  const Eigen::MatrixXd S =
-    K_GG - K_GI * K_II.llt().solve(Eigen::MatrixXd(K_GI.transpose()));
-  const Eigen::MatrixXd L_S = S.llt().matrixL();
-
-  const Eigen::MatrixXd L22 = cholesky.schur_factor();
-  EXPECT_LT((L22 - L_S).norm(), 1e-12 * L_S.norm());
-  EXPECT_EQ(Eigen::MatrixXd(L22.triangularView<Eigen::StrictlyUpper>()).norm(),
-            0.0);
-
-  // The forward substitution on the supernodes equals the dense one.
-  const Eigen::MatrixXd B = random_matrix(ng, 5);
-  Eigen::MatrixXd       W = B;
-  cholesky.solve_schur_factor(W);
-  const Eigen::MatrixXd W_reference =
-    L_S.triangularView<Eigen::Lower>().solve(B);
-  EXPECT_LT((W - W_reference).norm(), 1e-12 * W_reference.norm());
-
-  const Eigen::MatrixXd b           = random_matrix(N, 3);
-  const Eigen::MatrixXd u           = cholesky.solve(b);
-  const Eigen::MatrixXd u_reference = M * K_r.llt().solve(M.transpose() * b);
-  EXPECT_LT((u - u_reference).norm(), 1e-12 * u_reference.norm());
 }
 
 

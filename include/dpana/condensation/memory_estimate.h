@@ -1,0 +1,90 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#ifndef dpana_condensation_memory_estimate_h
+#define dpana_condensation_memory_estimate_h
+
+#include <dpana/linear_algebra/sparse_cholesky.h>
+
+#include <string>
+
+namespace dpana
+{
+  namespace condensation
+  {
+    /**
+     * The memory a body's condensation and the contact solve will need,
+     * estimated from CHOLMOD's symbolic analysis before the numerical
+     * factorisation, the expensive part, begins.
+     *
+     * The factorisation of the Schur route holds the supernodal factor
+     * (factor_entries numbers of 8 bytes, with about 1/8 more for its row
+     * indices, plus the largest dense update of a supernode, bounded here by
+     * the dense n_Gamma x n_Gamma block of the surface). The condensation
+     * adds the dense block W (n_Gamma x n_c) and A (n_c x n_c); the contact
+     * problem holds A once more and its solver a dense Cholesky factor of
+     * the same size and a few matrices of that size for its iterations
+     * (Alart-Curnier: the Jacobian and its factor). Hence
+     * @f[
+     *   M \approx M_\text{now}
+     *       + 8 \left(\tfrac98 n_L + \tfrac12 n_\Gamma^2\right)
+     *       + 8\, n_\Gamma n_c + 8 \cdot 5\, n_c^2 ,
+     * @f]
+     * with M_now the resident memory of the process when the estimate is
+     * made (mesh, stiffness matrix and the reduced copy handed to CHOLMOD).
+     */
+    struct MemoryEstimate
+    {
+      unsigned int n_dofs  = 0;
+      unsigned int n_gamma = 0;
+      unsigned int n_c     = 0;
+      /// Resident memory before the factorisation (bytes).
+      double current = 0;
+      /// The factor and the factorisation's workspace (bytes).
+      double factor = 0;
+      /// W and the copies of A (bytes).
+      double dense = 0;
+
+      /**
+       * The estimated peak, bytes.
+       */
+      double
+      total() const
+      {
+        return current + factor + dense;
+      }
+
+      /**
+       * "1115508 dofs, n_Gamma = 933, n_c = 466: about 1.9 GB (factor
+       * 1.2 GB, dense blocks 0.01 GB, now 0.7 GB)".
+       */
+      std::string
+      describe() const;
+    };
+
+    /**
+     * The estimate for a body of @p n_dofs degrees of freedom and @p n_c
+     * contact unknowns from the analysis of its factorisation.
+     */
+    MemoryEstimate
+    estimate_memory(const linear_algebra::SparseCholesky::Analysis &analysis,
+                    const unsigned int                              n_dofs,
+                    const unsigned int                              n_c);
+
+    /**
+     * The resident memory of this process now, in bytes (/proc/self/statm).
+     */
+    double
+    resident_memory();
+
+    /**
+     * The memory this process may use: @p limit_gb if it is positive,
+     * otherwise its resident memory plus the MemAvailable of
+     * /proc/meminfo (what the kernel can give without swapping), in bytes.
+     */
+    double
+    memory_limit(const double limit_gb);
+  } // namespace condensation
+} // namespace dpana
+
+#endif
