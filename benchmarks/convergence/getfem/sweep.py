@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""Runs the GetFEM harness over its refinement levels, one process per
+level, and writes results/getfem_<family>.json in the record format of the
+dpana sweep (code "getfem").
+
+Families (the dpana family each one is compared with, see families.py):
+  hertz_rigid_mu0         hertz.py --body dshape  (the body of dpana's scene)
+  hertz_circle_rigid_mu0  hertz.py --body circle  (the circular body of the
+                          reference formulation; no dpana scene yet)
+  receding_2d_mu0         receding.py
+
+  sweep.py --out results [--full] [FAMILY ...]
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+# family: (script arguments, default levels, extra levels of --full)
+FAMILIES = {
+    "hertz_rigid_mu0": (["hertz.py", "--body", "dshape"], range(0, 5), [5]),
+    "hertz_circle_rigid_mu0": (["hertz.py", "--body", "circle"],
+                               range(0, 5), [5]),
+    "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
+}
+H = {"hertz.py": lambda level: 2.0 ** -level,
+     "receding.py": lambda level: 40.0 / (4 * 2 ** level)}
+
+
+def run(python, family, full, timeout):
+    args, levels, extra = FAMILIES[family]
+    records = []
+    for level in list(levels) + (list(extra) if full else []):
+        start = time.perf_counter()
+        try:
+            proc = subprocess.run([python, *args, "--level", str(level)],
+                                  cwd=HERE, capture_output=True, text=True,
+                                  timeout=timeout)
+        except subprocess.TimeoutExpired:
+            records.append({"level": level, "failed": f"timeout {timeout} s"})
+            break
+        wall = time.perf_counter() - start
+        if proc.returncode != 0:
+            records.append({"level": level, "failed": proc.stderr[-300:]})
+            break
+        record = json.loads(proc.stdout.strip().splitlines()[-1])
+        record.update({"level": level, "h": H[args[0]](level), "wall": wall})
+        records.append(record)
+        print(f"  level {level}: dofs {record['dofs']}, solve "
+              f"{record['solve_time']:.3g} s, N_max {record['N_max']:.6g}"
+              + ("" if record["converged"] else " NOT converged"),
+              flush=True)
+        if not record["converged"]:
+            break
+    return records
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--full", action="store_true")
+    parser.add_argument("--timeout", type=float, default=900)
+    parser.add_argument("family", nargs="*")
+    args = parser.parse_args()
+    names = args.family or list(FAMILIES)
+    for name in names:
+        if name not in FAMILIES:
+            sys.exit(f"getfem/sweep.py: error: unknown family {name}")
+    os.makedirs(args.out, exist_ok=True)
+    with open("/proc/loadavg") as f:
+        load = f.read().split()[:3]
+    for name in names:
+        print(f"== GetFEM {name}", flush=True)
+        records = run(sys.executable, name, args.full, args.timeout)
+        with open(os.path.join(args.out, f"getfem_{name}.json"), "w") as f:
+            json.dump({"family": name, "code": "getfem", "loadavg": load,
+                       "records": records}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
