@@ -36,6 +36,13 @@ def load(directory):
     return runs
 
 
+def relative_errors(values, reference):
+    """|v - reference| / |reference|; a quantity whose exact value is 0 is
+    itself a relative error."""
+    return [abs(v - reference) / abs(reference) if reference else abs(v)
+            for v in values]
+
+
 def study(run, quantity, exact):
     """Extrapolation, errors and times to tolerance of one quantity."""
     records = [r for r in run["ok"] if r.get(quantity) is not None]
@@ -43,9 +50,7 @@ def study(run, quantity, exact):
     q = [r[quantity] for r in records]
     extra = richardson.extrapolate(h, q)
     reference = exact if exact is not None else extra["value"]
-    # A quantity whose exact value is 0 is itself a relative error.
-    errors = [abs(v - reference) / abs(reference) if reference else abs(v)
-              for v in q]
+    errors = relative_errors(q, reference)
     times = [r["solve_time"] for r in records]
     # Without an asymptotic extrapolation the finest level is the reference
     # and the errors are known only down to the difference of the two
@@ -176,7 +181,7 @@ def equal_error_ratios(sd, sg):
             out[tol] = "not resolved"
             continue
         td, tg = (richardson.time_to_tolerance(
-            s["times"], [abs(v - ref) / abs(ref) for v in s["values"]], tol)
+            s["times"], relative_errors(s["values"], ref), tol)
             for s in (sd, sg))
         # A time that is only an upper bound (reached on the coarsest
         # level) gives no ratio.

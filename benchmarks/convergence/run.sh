@@ -27,14 +27,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --full) full=(--full); shift ;;
     --no-getfem) getfem=0; shift ;;
-    --out)
-      if [ $# -lt 2 ]; then
-        echo "run.sh: error: --out needs a directory" >&2
-        exit 1
-      fi
-      out="$2"
-      shift 2
-      ;;
+    --out) out="${2:?run.sh: error: --out needs a directory}"; shift 2 ;;
     -*) echo "run.sh: error: unknown option '$1'" >&2; exit 1 ;;
     *) families+=("$1"); shift ;;
   esac

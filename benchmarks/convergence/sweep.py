@@ -12,8 +12,6 @@ fails or does not converge is recorded as such and ends the family's sweep.
            [--timeout S] [--repeat N] [FAMILY ...]
 """
 
-import argparse
-import json
 import os
 import subprocess
 import sys
@@ -22,6 +20,7 @@ import time
 
 import families
 import prm_edit
+import records as records_io
 from quantities import run_quantities
 
 
@@ -66,37 +65,22 @@ def run_level(dpana, family, prm_dir, level, h, edits, timeout):
 
 
 def sweep(dpana, family, prm_dir, full, timeout, repeat=1):
-    """The levels of family; with repeat > 1 every level runs that many
-    times and keeps its fastest run (on a shared machine the minimum is
-    the time least disturbed by other work; the answers are the same)."""
+    """The levels of family, each run repeat times, the fastest kept."""
     levels = family.levels + (family.full if full else [])
     records = []
     for i, (h, edits) in enumerate(levels):
-        runs = [run_level(dpana, family, prm_dir, i, h, edits, timeout)
-                for _ in range(repeat)]
-        record = min(runs, key=lambda r: r.get("solve_time", float("inf")))
-        records.append(record)
-        if "failed" in record:
-            print(f"  level {i}: FAILED ({record['failed']})", flush=True)
+        records.append(records_io.fastest(
+            [run_level(dpana, family, prm_dir, i, h, edits, timeout)
+             for _ in range(repeat)]))
+        if not records_io.progress(records[-1]):
             break
-        print(f"  level {i}: h = {h:.4g}, dofs {record['dofs']}, "
-              f"contact unknowns {record['contact_unknowns']}, solve "
-              f"{record['solve_time']:.3g} s, N_max {record['N_max']:.6g}"
-              + ("" if record["converged"] else " NOT converged"),
-              flush=True)
     return records
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = records_io.parser(__doc__.splitlines()[0])
     parser.add_argument("--dpana", required=True)
     parser.add_argument("--prm-dir", required=True)
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--full", action="store_true")
-    parser.add_argument("--timeout", type=float, default=600)
-    parser.add_argument("--repeat", type=int, default=1,
-                        help="runs per level, the fastest kept")
-    parser.add_argument("family", nargs="*")
     args = parser.parse_args()
     names = args.family or [f.name for f in families.FAMILIES]
     unknown = [n for n in names if n not in families.BY_NAME]
@@ -104,16 +88,12 @@ def main():
         sys.exit(f"sweep.py: error: unknown family {', '.join(unknown)} "
                  f"(known: {', '.join(families.BY_NAME)})")
     os.makedirs(args.out, exist_ok=True)
-    with open("/proc/loadavg") as f:
-        load = f.read().split()[:3]
+    load = records_io.load_average()
     for name in names:
-        family = families.BY_NAME[name]
         print(f"== {name}", flush=True)
-        records = sweep(os.path.abspath(args.dpana), family, args.prm_dir,
-                        args.full, args.timeout, args.repeat)
-        with open(os.path.join(args.out, f"{name}.json"), "w") as f:
-            json.dump({"family": name, "code": "dpana", "loadavg": load,
-                       "records": records}, f, indent=1)
+        records = sweep(os.path.abspath(args.dpana), families.BY_NAME[name],
+                        args.prm_dir, args.full, args.timeout, args.repeat)
+        records_io.write(args.out, name, "dpana", records, load)
 
 
 if __name__ == "__main__":

@@ -12,7 +12,6 @@ Families (the dpana family each one is compared with, see families.py):
   sweep.py --out results [--full] [--repeat N] [FAMILY ...]
 """
 
-import argparse
 import json
 import os
 import subprocess
@@ -20,6 +19,8 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+import records as records_io  # noqa: E402  (benchmarks/convergence/)
 # family: (script arguments, default levels, extra levels of --full)
 FAMILIES = {
     "hertz_rigid_mu0": (["hertz.py", "--body", "dshape"], range(-2, 5),
@@ -53,45 +54,27 @@ def run(python, family, full, timeout, repeat):
     args, levels, extra = FAMILIES[family]
     records = []
     for level in list(levels) + (list(extra) if full else []):
-        runs = [run_level(python, args, level, timeout)
-                for _ in range(repeat)]
-        record = min(runs, key=lambda r: r.get("solve_time", float("inf")))
-        if "failed" in record:
-            records.append(record)
-            break
-        records.append(record)
-        print(f"  level {level}: dofs {record['dofs']}, solve "
-              f"{record['solve_time']:.3g} s, N_max {record['N_max']:.6g}"
-              + ("" if record["converged"] else " NOT converged"),
-              flush=True)
-        if not record["converged"]:
+        records.append(records_io.fastest(
+            [run_level(python, args, level, timeout)
+             for _ in range(repeat)]))
+        if not records_io.progress(records[-1]):
             break
     return records
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--full", action="store_true")
-    parser.add_argument("--timeout", type=float, default=900)
-    parser.add_argument("--repeat", type=int, default=1,
-                        help="runs per level, the fastest kept")
-    parser.add_argument("family", nargs="*")
-    args = parser.parse_args()
+    args = records_io.parser(__doc__.splitlines()[0]).parse_args()
     names = args.family or list(FAMILIES)
     for name in names:
         if name not in FAMILIES:
             sys.exit(f"getfem/sweep.py: error: unknown family {name}")
     os.makedirs(args.out, exist_ok=True)
-    with open("/proc/loadavg") as f:
-        load = f.read().split()[:3]
+    load = records_io.load_average()
     for name in names:
         print(f"== GetFEM {name}", flush=True)
         records = run(sys.executable, name, args.full, args.timeout,
                       args.repeat)
-        with open(os.path.join(args.out, f"getfem_{name}.json"), "w") as f:
-            json.dump({"family": name, "code": "getfem", "loadavg": load,
-                       "records": records}, f, indent=1)
+        records_io.write(args.out, name, "getfem", records, load)
 
 
 if __name__ == "__main__":
