@@ -121,7 +121,7 @@ def quantity_table(rows):
     return lines
 
 
-def plot_family(ax_t, ax_d, studies, style, label):
+def plot_family(ax_t, ax_d, studies, style, label, colour=None):
     for s in studies:
         pts = [(t, d, e) for t, d, e in zip(s["times"], s["dofs"],
                                              s["errors"]) if e and e > 0]
@@ -129,8 +129,8 @@ def plot_family(ax_t, ax_d, studies, style, label):
             continue
         t, d, e = zip(*pts)
         name = f"{label} {s['quantity']}"
-        ax_t.loglog(t, e, style, label=name)
-        ax_d.loglog(d, e, style, label=name)
+        ax_t.loglog(t, e, style, label=name, color=colour)
+        ax_d.loglog(d, e, style, label=name, color=colour)
 
 
 def decorate(ax_t, ax_d, title):
@@ -165,16 +165,10 @@ def hertz_values(run):
 
 
 def equal_error_ratios(sd, sg):
-    """dpana time / GetFEM time at equal relative error. Both codes solve
-    the same continuous problem: their errors are measured against one
-    reference, the exact value or the mean of their two converged values;
-    a tolerance below twice the distance between those two values is not
-    resolved."""
-    if sd["exact"] is not None:
-        ref, spread = sd["exact"], 0.0
-    else:
-        ref = 0.5 * (sd["reference"] + sg["reference"])
-        spread = abs(sd["reference"] - sg["reference"]) / abs(ref)
+    """dpana time / GetFEM time at equal relative error, both against
+    common_reference(); a tolerance below twice the distance between the
+    two converged values is not resolved."""
+    ref, spread = common_reference(sd, sg)
     out = {}
     for tol in (0.01, 0.005, 0.002, 0.001):
         if tol < 2 * spread:
@@ -204,7 +198,9 @@ def main():
     md += [f"Load average at the start of the sweeps: {'; '.join(loads)}.",
            ""]
     summary = {}
-    fig_all, (all_t, all_d) = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig_all, (all_t, all_d) = plt.subplots(1, 2, figsize=(12, 5.5))
+    colours = iter(plt.get_cmap("tab20").colors)
+    markers = iter(["o-", "s-", "^-", "v-", "D-", "<-", ">-", "p-"] * 3)
     fig_gf, gf_axes = plt.subplots(1, 2, figsize=(11, 4.5))
     for name in names:
         fam = family_of(name)
@@ -215,7 +211,10 @@ def main():
             run = runs.get((code, name))
             if run is None or len(run["ok"]) == 0:
                 continue
-            hertz = hertz_values(run) if fam.hertz else None
+            # The Hertz values of the scene, from either code's records.
+            hertz = (hertz_values(run) or hertz_values(
+                runs.get(("dpana", name), {"ok": []}))) if fam.hertz \
+                else None
             studies = [study(run, q, fam.exact.get(q))
                        for q in fam.quantities
                        if any(q in r for r in run["ok"])]
@@ -227,15 +226,10 @@ def main():
             plotted = [s for s in studies if s["quantity"] in fam.plot]
             plot_family(ax_t, ax_d, plotted, style, code)
             if code == "dpana":
-                plot_family(all_t, all_d, plotted[:1], "o-", name)
-            if code == "getfem":
-                plot_family(*gf_axes, plotted, style, f"GetFEM {name}")
-                mate = runs.get(("dpana", name))
-                if mate:
-                    plot_family(*gf_axes, [study(mate, s["quantity"],
-                                                 fam.exact.get(s["quantity"]))
-                                           for s in plotted], "o-",
-                                f"dpana {name}")
+                first = [s for s in studies if s["quantity"] == fam.plot[0]
+                         and max(s["errors"]) > 1e-8]
+                plot_family(all_t, all_d, first, next(markers), name,
+                            next(colours))
             summary.setdefault(name, {})[code] = {
                 s["quantity"]: {"converged": s["reference"],
                                 "order": s["extrapolated"]["order"],
@@ -254,11 +248,13 @@ def main():
         md += [f"![{name}]({name}.png)", ""]
     md[4:4] = overview(summary)
     md += comparison_section(summary)
-    decorate(all_t, all_d, "dpana: error of N_max (against exact or "
-             "extrapolated value)")
+    plot_peer(gf_axes, summary)
+    decorate(all_t, all_d, "dpana: error of the first quantity of each "
+             "family (against the extrapolated value)")
     fig_all.tight_layout()
     fig_all.savefig(os.path.join(directory, "speed_vs_error.png"), dpi=80)
-    decorate(*gf_axes, "dpana (circles) and GetFEM (squares)")
+    decorate(*gf_axes, "Hertz cylinder: dpana (circles) and GetFEM "
+             "(squares; dotted: circular body)")
     fig_gf.tight_layout()
     fig_gf.savefig(os.path.join(directory, "getfem.png"), dpi=80)
     for fam in summary.values():
@@ -271,6 +267,47 @@ def main():
     with open(os.path.join(directory, "summary.json"), "w") as f:
         json.dump(summary, f, indent=1)
     print(f"analyse.py: wrote {directory}/convergence.md")
+
+
+def common_reference(sd, sg):
+    """The value both codes are measured against at equal error: the exact
+    value, or the mean of their converged values; and the relative distance
+    between those."""
+    if sd["exact"] is not None:
+        return sd["exact"], 0.0
+    ref = 0.5 * (sd["reference"] + sg["reference"])
+    return ref, abs(sd["reference"] - sg["reference"]) / abs(ref)
+
+
+def plot_peer(axes, summary):
+    """dpana (circles, solid) and GetFEM (squares, dashed) on the families
+    both solve, against the common reference; GetFEM-only families dotted.
+    Families whose errors are round-off (exact on every level) are left
+    out: the tables give them."""
+    colours = iter(["C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7"])
+    for name, codes in summary.items():
+        if "getfem" not in codes:
+            continue
+        fam = family_of(name)
+        mates = {s["quantity"]: s for s in
+                 codes.get("dpana", {}).get("_studies", [])}
+        for sg in codes["getfem"]["_studies"]:
+            if sg["quantity"] not in fam.plot or max(sg["errors"]) < 1e-8:
+                continue
+            colour = next(colours)
+            sd = mates.get(sg["quantity"])
+            ref = common_reference(sd, sg)[0] if sd else sg["reference"]
+            pairs = [(sg, "s--" if sd else "s:", "GetFEM")]
+            if sd:
+                pairs.append((sd, "o-", "dpana"))
+            for s, style, code in pairs:
+                pts = [(t, d, e) for t, d, e in zip(
+                    s["times"], s["dofs"], relative_errors(s["values"], ref))
+                    if e > 0]
+                t, d, e = zip(*pts)
+                label = f"{code} {name} {s['quantity']}"
+                axes[0].loglog(t, e, style, color=colour, label=label)
+                axes[1].loglog(d, e, style, color=colour, label=label)
 
 
 def overview(summary):

@@ -8,7 +8,9 @@ about a minute of dpana time or less on a 2-core machine); `full` adds finer
 levels for `--full`.
 
 `quantities` are the answers that are tabulated and extrapolated (see
-quantities.py); `plot` the ones drawn in the speed-against-error plots.
+quantities.py); `plot` the ones drawn in the speed-against-error plots,
+the first in the plot of all families (the pressure centroid for the two
+bodies, whose N_max sits on a singular edge).
 `exact` gives the exact value of a quantity where the problem has one; the
 others are measured against their Richardson-extrapolated value. `hertz`
 marks the scenes whose summary carries the plane Hertz formulas, shown next
@@ -95,15 +97,15 @@ FAMILIES = [
            plot=("N_max", "N_first"), exact={"resultant": 80000.0}),
     Family("two_body_ratio_1", "two_body_ratio_1.prm", 2,
            two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
-           quantities=BLOCK_Q, plot=("N_max", "x_p"),
+           quantities=BLOCK_Q, plot=("x_p", "N_max"),
            exact={"resultant": 2000.0}),
     Family("two_body_ratio_1e-3", "two_body_ratio_1e-3.prm", 2,
            two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
-           quantities=BLOCK_Q, plot=("N_max", "x_p"),
+           quantities=BLOCK_Q, plot=("x_p", "N_max"),
            exact={"resultant": 2000.0}),
     Family("two_body_ratio_1e3", "two_body_ratio_1e3.prm", 2,
            two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
-           quantities=BLOCK_Q, plot=("N_max", "x_p"),
+           quantities=BLOCK_Q, plot=("x_p", "N_max"),
            exact={"resultant": 2000.0}),
 ]
 

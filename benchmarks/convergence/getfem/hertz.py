@@ -64,6 +64,9 @@ def main():
               "h_c": hc}
     record.update(pressure_quantities(*body.nodal_pressures()))
     record["solve_time"] = time.perf_counter() - start
+    # Plane Hertz: a = sqrt(4 P R (1 - nu^2) / (pi E)), p0 = 2 P / (pi a).
+    a = math.sqrt(4 * P * R * (1 - NU * NU) / (math.pi * E))
+    record["hertz"] = {"a": a, "N_max": 2 * P / (math.pi * a)}
     record["meshing_time"] = meshing
     json.dump(record, sys.stdout)
     print()
