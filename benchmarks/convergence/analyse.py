@@ -114,7 +114,8 @@ def quantity_table(rows):
             value = fmt(x["value"], 7)
             order, prev = fmt(x["order"], 3), fmt(x["previous_order"], 3)
             asym = "yes" if x["asymptotic"] else "no: " + x["note"]
-        h = "—" if hertz is None else f"{hertz:.6g} ({(s['reference'] - hertz) / hertz:+.2%})"
+        h = "—" if hertz is None else \
+            f"{hertz:.6g} ({(s['reference'] - hertz) / hertz:+.2%})"
         lines.append("| " + " | ".join([
             s["quantity"], code, value, order, prev, asym, h,
             fmt_reach(s["reach"][0.01]), fmt_reach(s["reach"][0.001])]) + " |")
@@ -184,30 +185,16 @@ def equal_error_ratios(sd, sg):
     return out
 
 
-def main():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    directory = sys.argv[1]
-    runs = load(directory)
+def analyse_runs(runs):
+    """Per family (in the order of families.py) and code: the studies of
+    its quantities, its records and the scene's Hertz values."""
+    order = [f.name for f in families.FAMILIES]
     names = sorted({name for _, name in runs},
-                   key=lambda n: [f.name for f in families.FAMILIES].index(n)
-                   if n in families.BY_NAME else 99)
-    md = ["# Convergence sweeps: tables of one run", ""]
-    loads = sorted({" ".join(r["loadavg"]) for r in runs.values()})
-    md += [f"Load average at the start of the sweeps: {'; '.join(loads)}.",
-           ""]
+                   key=lambda n: order.index(n) if n in order else 99)
     summary = {}
-    fig_all, (all_t, all_d) = plt.subplots(1, 2, figsize=(12, 5.5))
-    colours = iter(plt.get_cmap("tab20").colors)
-    markers = iter(["o-", "s-", "^-", "v-", "D-", "<-", ">-", "p-"] * 3)
-    fig_gf, gf_axes = plt.subplots(1, 2, figsize=(11, 4.5))
     for name in names:
         fam = family_of(name)
-        md += [f"## {name}", "", f"Scene `prm/{fam.prm}`. {fam.note}", ""]
-        rows = []
-        fig, (ax_t, ax_d) = plt.subplots(1, 2, figsize=(11, 4.5))
-        for code, style in (("dpana", "o-"), ("getfem", "s--")):
+        for code in ("dpana", "getfem"):
             run = runs.get((code, name))
             if run is None or len(run["ok"]) == 0:
                 continue
@@ -215,57 +202,96 @@ def main():
             hertz = (hertz_values(run) or hertz_values(
                 runs.get(("dpana", name), {"ok": []}))) if fam.hertz \
                 else None
-            studies = [study(run, q, fam.exact.get(q))
-                       for q in fam.quantities
-                       if any(q in r for r in run["ok"])]
-            md += [f"{code}:", ""] + level_table(run, studies) + [""]
-            for s in studies:
-                hv = hertz.get(s["quantity"] if s["quantity"] != "a_m"
-                               else "a") if hertz else None
-                rows.append((code, s, hv))
-            plotted = [s for s in studies if s["quantity"] in fam.plot]
-            plot_family(ax_t, ax_d, plotted, style, code)
-            if code == "dpana":
-                first = [s for s in studies if s["quantity"] == fam.plot[0]
-                         and max(s["errors"]) > 1e-8]
-                plot_family(all_t, all_d, first, next(markers), name,
-                            next(colours))
             summary.setdefault(name, {})[code] = {
-                s["quantity"]: {"converged": s["reference"],
-                                "order": s["extrapolated"]["order"],
-                                "asymptotic": s["extrapolated"]["asymptotic"],
-                                "time_1pc": s["reach"][0.01],
-                                "time_01pc": s["reach"][0.001]}
-                for s in studies}
-            summary[name][code]["_studies"] = studies
-            summary[name][code]["_records"] = run["ok"]
-            summary[name][code]["_hertz"] = hertz
-        md += quantity_table(rows) + [""]
-        decorate(ax_t, ax_d, name)
-        fig.tight_layout()
-        fig.savefig(os.path.join(directory, f"{name}.png"), dpi=80)
-        plt.close(fig)
-        md += [f"![{name}]({name}.png)", ""]
-    md[4:4] = overview(summary)
-    md += comparison_section(summary)
-    plot_peer(gf_axes, summary)
-    decorate(all_t, all_d, "dpana: error of the first quantity of each "
+                "studies": [study(run, q, fam.exact.get(q))
+                            for q in fam.quantities
+                            if any(q in r for r in run["ok"])],
+                "records": run["ok"], "hertz": hertz}
+    return summary
+
+
+def family_section(name, codes, directory, plt):
+    """The tables of one family, and its plot <family>.png."""
+    fam = family_of(name)
+    md = [f"## {name}", "", f"Scene `prm/{fam.prm}`. {fam.note}", ""]
+    rows = []
+    fig, (ax_t, ax_d) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for code, style in (("dpana", "o-"), ("getfem", "s--")):
+        if code not in codes:
+            continue
+        c = codes[code]
+        md += [f"{code}:", ""] + level_table(
+            {"ok": c["records"]}, c["studies"]) + [""]
+        for s in c["studies"]:
+            key = "a" if s["quantity"] == "a_m" else s["quantity"]
+            rows.append((code, s, c["hertz"].get(key) if c["hertz"]
+                         else None))
+        plot_family(ax_t, ax_d, [s for s in c["studies"]
+                                 if s["quantity"] in fam.plot], style, code)
+    decorate(ax_t, ax_d, name)
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, f"{name}.png"), dpi=80)
+    plt.close(fig)
+    return md + quantity_table(rows) + ["", f"![{name}]({name}.png)", ""]
+
+
+def plot_all(summary, directory, plt):
+    """speed_vs_error.png: the first plotted quantity of every family
+    (dpana), unless its errors are round-off."""
+    fig, (ax_t, ax_d) = plt.subplots(1, 2, figsize=(12, 5.5))
+    colours = iter(plt.get_cmap("tab20").colors)
+    markers = iter(["o-", "s-", "^-", "v-", "D-", "<-", ">-", "p-"] * 3)
+    for name, codes in summary.items():
+        if "dpana" not in codes:
+            continue
+        first = [s for s in codes["dpana"]["studies"]
+                 if s["quantity"] == family_of(name).plot[0]
+                 and max(s["errors"]) > 1e-8]
+        plot_family(ax_t, ax_d, first, next(markers), name, next(colours))
+    decorate(ax_t, ax_d, "dpana: error of the first quantity of each "
              "family (against the extrapolated value)")
-    fig_all.tight_layout()
-    fig_all.savefig(os.path.join(directory, "speed_vs_error.png"), dpi=80)
-    decorate(*gf_axes, "Hertz cylinder: dpana (circles) and GetFEM "
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "speed_vs_error.png"), dpi=80)
+    plt.close(fig)
+
+
+def write_summary(summary, directory):
+    """summary.json: per family, code and quantity the converged value,
+    the observed order and the times to 1 % and 0.1 %."""
+    out = {name: {code: {s["quantity"]: {
+        "converged": s["reference"], "order": s["extrapolated"]["order"],
+        "asymptotic": s["extrapolated"]["asymptotic"],
+        "time_1pc": s["reach"][0.01], "time_01pc": s["reach"][0.001]}
+        for s in c["studies"]} for code, c in codes.items()}
+        for name, codes in summary.items()}
+    with open(os.path.join(directory, "summary.json"), "w") as f:
+        json.dump(out, f, indent=1)
+
+
+def main():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    directory = sys.argv[1]
+    runs = load(directory)
+    summary = analyse_runs(runs)
+    loads = sorted({" ".join(r["loadavg"]) for r in runs.values()})
+    md = ["# Convergence sweeps: tables of one run", "",
+          f"Load average at the start of the sweeps: {'; '.join(loads)}.",
+          ""] + overview(summary)
+    for name, codes in summary.items():
+        md += family_section(name, codes, directory, plt)
+    md += comparison_section(summary)
+    plot_all(summary, directory, plt)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    plot_peer(axes, summary)
+    decorate(*axes, "Hertz cylinder: dpana (circles) and GetFEM "
              "(squares; dotted: circular body)")
-    fig_gf.tight_layout()
-    fig_gf.savefig(os.path.join(directory, "getfem.png"), dpi=80)
-    for fam in summary.values():
-        for code in fam.values():
-            code.pop("_studies", None)
-            code.pop("_records", None)
-            code.pop("_hertz", None)
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "getfem.png"), dpi=80)
     with open(os.path.join(directory, "convergence.md"), "w") as f:
         f.write("\n".join(md) + "\n")
-    with open(os.path.join(directory, "summary.json"), "w") as f:
-        json.dump(summary, f, indent=1)
+    write_summary(summary, directory)
     print(f"analyse.py: wrote {directory}/convergence.md")
 
 
@@ -290,8 +316,8 @@ def plot_peer(axes, summary):
             continue
         fam = family_of(name)
         mates = {s["quantity"]: s for s in
-                 codes.get("dpana", {}).get("_studies", [])}
-        for sg in codes["getfem"]["_studies"]:
+                 codes.get("dpana", {}).get("studies", [])}
+        for sg in codes["getfem"]["studies"]:
             if sg["quantity"] not in fam.plot or max(sg["errors"]) < 1e-8:
                 continue
             colour = next(colours)
@@ -320,14 +346,14 @@ def overview(summary):
         if "dpana" not in codes:
             continue
         fam = family_of(name)
-        last = codes["dpana"]["_records"][-1]
-        for s in codes["dpana"]["_studies"]:
+        last = codes["dpana"]["records"][-1]
+        for s in codes["dpana"]["studies"]:
             if s["quantity"] not in fam.plot:
                 continue
             x = s["extrapolated"]
             exact = s["exact"] is not None
             value = f"{s['reference']:.7g}" + (" (exact)" if exact else "")
-            hertz = codes["dpana"].get("_hertz")
+            hertz = codes["dpana"]["hertz"]
             key = "a" if s["quantity"] == "a_m" else s["quantity"]
             h = f"{(s['reference'] - hertz[key]) / hertz[key]:+.2%}" \
                 if hertz and key in hertz else "—"
@@ -352,8 +378,8 @@ def comparison_section(summary):
     for name, codes in summary.items():
         if "getfem" not in codes or "dpana" not in codes:
             continue
-        sd_all = {s["quantity"]: s for s in codes["dpana"]["_studies"]}
-        for sg in codes["getfem"]["_studies"]:
+        sd_all = {s["quantity"]: s for s in codes["dpana"]["studies"]}
+        for sg in codes["getfem"]["studies"]:
             sd = sd_all.get(sg["quantity"])
             if sd is None or sg["quantity"] == "resultant":
                 continue
@@ -369,12 +395,13 @@ def comparison_section(summary):
            "receding block; the same element size on the contact surface "
            "for the Hertz bodies, whose meshes differ away from it):", "",
            "| family | h | dofs dpana | dofs GetFEM | solve dpana (s) | "
-           "solve GetFEM (s) | dpana / GetFEM |", "|---|---|---|---|---|---|---|"]
+           "solve GetFEM (s) | dpana / GetFEM |",
+           "|---|---|---|---|---|---|---|"]
     for name, codes in summary.items():
         if "getfem" not in codes or "dpana" not in codes:
             continue
-        d = {round(r["h"], 9): r for r in codes["dpana"]["_records"]}
-        for g in codes["getfem"]["_records"]:
+        d = {round(r["h"], 9): r for r in codes["dpana"]["records"]}
+        for g in codes["getfem"]["records"]:
             r = d.get(round(g["h"], 9))
             if r is None:
                 continue

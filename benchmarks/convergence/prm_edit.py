@@ -47,7 +47,8 @@ def set_entry(text, path, value):
     # Not set: add it at the end of the deepest existing subsection.
     depth, insert_at = 0, len(lines)
     for i, kind, stack, _ in _scan(lines):
-        if kind == "end" and stack == sections[: len(stack)] and len(stack) > depth:
+        if kind == "end" and len(stack) > depth \
+                and stack == sections[: len(stack)]:
             depth, insert_at = len(stack), i
     new = []
     for level in range(depth, len(sections)):
