@@ -72,7 +72,7 @@ cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
 # The families GetFEM also solves: those the sweep is asked for (all by
 # default). They are timed side by side, dpana then GetFEM per family, and
 # every level runs twice, its fastest run kept (the machine may be shared).
-peer_all=(hertz_rigid_mu0 receding_2d_mu0)
+peer_all=(hertz_rigid_mu0 receding_2d_mu0 receding_2d_mu1)
 peer=()
 rest=()
 if [ ${#families[@]} -eq 0 ]; then

@@ -54,15 +54,24 @@ class ElasticBody:
         self.md.add_normal_Dirichlet_condition_with_multipliers(
             self.mim, "u", 1, region)
 
-    def contact(self, region, r):
+    def contact(self, region, r, mu=0.0):
         """Nodal Signorini contact on region with the plane y = 0 (signed
-        distance y), augmentation r (MPa)."""
+        distance y), augmentation r (MPa); with mu > 0, Coulomb friction
+        (static: the tangential multipliers against the total tangential
+        displacement, the one-step problem dpana solves)."""
         cdof = self.mfu.dof_on_region(region)
         self.contact_dofs = cdof[1::2]
         self.md.add_variable("lambda_n", len(self.contact_dofs))
         self.md.add_initialized_data("r", [r])
-        self.md.add_nodal_contact_with_rigid_obstacle_brick(
-            self.mim, "u", "lambda_n", "r", region, "y", 1)
+        if mu > 0:
+            self.md.add_variable("lambda_t", len(self.contact_dofs))
+            self.md.add_initialized_data("friction", [mu])
+            self.md.add_nodal_contact_with_rigid_obstacle_brick(
+                self.mim, "u", "lambda_n", "lambda_t", "r", "friction",
+                region, "y", 1)
+        else:
+            self.md.add_nodal_contact_with_rigid_obstacle_brick(
+                self.mim, "u", "lambda_n", "r", region, "y", 1)
         self.contact_region = region
 
     def solve(self, residual, max_iter=100):

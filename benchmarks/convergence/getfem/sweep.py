@@ -8,6 +8,7 @@ Families (the dpana family each one is compared with, see families.py):
   hertz_circle_rigid_mu0  hertz.py --body circle  (the circular body of the
                           reference formulation; no dpana scene yet)
   receding_2d_mu0         receding.py
+  receding_2d_mu1         receding.py --mu 1
 
   sweep.py --out results [--full] [--repeat N] [FAMILY ...]
 """
@@ -28,6 +29,7 @@ FAMILIES = {
     "hertz_circle_rigid_mu0": (["hertz.py", "--body", "circle"],
                                range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
+    "receding_2d_mu1": (["receding.py", "--mu", "1"], range(0, 6), [6]),
 }
 H = {"hertz.py": lambda level: 2.0 ** -level,
      "receding.py": lambda level: 40.0 / (4 * 2 ** level)}
