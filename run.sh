@@ -12,4 +12,6 @@ if [ "${1:-}" = "--tutorial" ]; then
   exec "$top/doc/tutorials/run_step.sh" "${2:?usage: ./run.sh --tutorial N}"
 fi
 scene="${1:-$top/prm/default.prm}"
+# Scenes on generated meshes name them in "# mesh:" lines (gmsh, if missing).
+python3 "$top/scripts/meshes/make_meshes.py" "$scene"
 exec "${DPANA_BUILD_DIR:-$top/build}/dpana" "$scene"

@@ -46,7 +46,7 @@ if [ "$quick" = 0 ]; then
   scenes+=(receding_3d_L160 receding_3d_L320)
 fi
 scenes+=(two_body_ratio_1 two_body_ratio_1e-3 two_body_ratio_1e3
-  hertz_rigid_mu0 hertz_rigid_mu1
+  hertz_rigid_mu0 hertz_rigid_mu0_d_shaped hertz_rigid_mu1
   hertz_ratio_1_mu0 hertz_ratio_1_mu1 hertz_ratio_1e-3_mu0 hertz_ratio_1e-3_mu1
   hertz_ratio_1e3_mu0 hertz_ratio_1e3_mu1 hertz_cavity_mu0 hertz_cavity_mu1)
 

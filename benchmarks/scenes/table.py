@@ -35,8 +35,13 @@ def reference_text(refs):
             errors.append("max |ΔN|/|N| %.1e, max |T|/|N| %.1e" % (v["max_N_error"], v["max_T"]))
         elif v["type"] == "hertz":
             texts.append("Hertz a = %.4g, N_max = %.5g" % (v["a"], v["N_max"]))
-            errors.append("Hertz: a %+.1f %%, N_max %+.1f %%"
-                          % (100 * v["a_error"], 100 * v["N_max_error"]))
+            text = "Hertz: a %+.1f %%, N_max %+.1f %%" % (100 * v["a_error"],
+                                                          100 * v["N_max_error"])
+            if "a_moment_error" in v:
+                text += ", a_m %+.2f %%" % (100 * v["a_moment_error"])
+            if "a_fit_error" in v:
+                text += ", a_f %+.2f %%" % (100 * v["a_fit_error"])
+            errors.append(text)
         elif v["type"] == "published table":
             texts.append("reference table a = %.4g, N_max = %.5g" % (v["a"], v["N_max"]))
             errors.append("reference table: a %+.1f %%, N_max %+.1f %%"

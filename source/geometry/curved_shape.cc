@@ -217,6 +217,15 @@ namespace dpana
 
 
 
+    template <int dim>
+    std::vector<std::pair<dealii::Point<2>, ContactRefinement>>
+    CurvedShape<dim>::further_refinements() const
+    {
+      return {};
+    }
+
+
+
     // 2 triangles per quadrilateral, 4 children per refinement, and in 3D
     // 3 tetrahedra per prism of each layer. The contact refinements, local,
     // are left out of the estimate.
@@ -251,6 +260,8 @@ namespace dpana
                   contact_point(),
                   refinement.radius,
                   refinement.n_refinements);
+      for (const auto &[point, zone] : further_refinements())
+        refine_near(quads, point, zone.radius, zone.n_refinements);
 
       std::vector<dealii::Point<2>>    vertices_2d;
       std::vector<dealii::CellData<2>> triangles;

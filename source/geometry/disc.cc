@@ -18,96 +18,120 @@ namespace dpana
 {
   namespace geometry
   {
-    namespace
+    // The lower half (or the lower right quarter, x >= c_x) of the disc of
+    // centre c and radius r as 6 (or 3) quadrilaterals (see the class
+    // documentation of Disc), and with @p whole its mirror image above
+    // y = c_y as well. Manifold 0 (polar) on the curved boundary, manifold 1
+    // (transfinite interpolation) on the cells, flat straight boundaries.
+    void
+    make_disc_quadrilaterals(dealii::Triangulation<2> &quads,
+                             const dealii::Point<2>    c,
+                             const double              r,
+                             const bool                quarter,
+                             const bool                whole)
     {
-      // The lower half (or the lower right quarter, x >= c_x) of the disc of
-      // centre c and radius r, as 6 (or 3) quadrilaterals (see the class
-      // documentation). Manifold 0 (polar) on the curved boundary, manifold
-      // 1 (transfinite interpolation) on the cells, flat straight
-      // boundaries.
-      void
-      make_half_disc_quads(dealii::Triangulation<2> &quads,
-                           const dealii::Point<2>    c,
-                           const double              r,
-                           const bool                quarter)
-      {
-        const double a = 0.5 * r, s = r / std::sqrt(2.);
-        // Vertices relative to the centre.
-        const std::vector<dealii::Point<2>> v = {{-r, 0},  // 0
-                                                 {-a, 0},  // 1
-                                                 {0, 0},   // 2
-                                                 {a, 0},   // 3
-                                                 {r, 0},   // 4
-                                                 {-a, -a}, // 5
-                                                 {0, -a},  // 6
-                                                 {a, -a},  // 7
-                                                 {-s, -s}, // 8
-                                                 {0, -r},  // 9
-                                                 {s, -s}}; // 10
-        // Cells in deal.II's lexicographic vertex order (v0, v1, v2, v3 =
-        // (0,0), (1,0), (0,1), (1,1) of the reference square).
-        const std::vector<std::array<unsigned int, 4>> left  = {{{5, 6, 1, 2}},
-                                                                {{8, 5, 0, 1}},
-                                                                {{9, 6, 8, 5}}};
-        const std::vector<std::array<unsigned int, 4>> right = {
-          {{6, 7, 2, 3}}, {{7, 10, 3, 4}}, {{9, 10, 6, 7}}};
+      const double a = 0.5 * r, s = r / std::sqrt(2.);
+      // Vertices relative to the centre: the lower half (0-10), then the
+      // mirror images of the vertices 5-10 below y = 0 (11-16).
+      std::vector<dealii::Point<2>> v = {{-r, 0},  // 0
+                                         {-a, 0},  // 1
+                                         {0, 0},   // 2
+                                         {a, 0},   // 3
+                                         {r, 0},   // 4
+                                         {-a, -a}, // 5
+                                         {0, -a},  // 6
+                                         {a, -a},  // 7
+                                         {-s, -s}, // 8
+                                         {0, -r},  // 9
+                                         {s, -s}}; // 10
+      for (unsigned int i = 5; i <= 10; ++i)
+        v.emplace_back(v[i][0], -v[i][1]);
+      // Cells in deal.II's lexicographic vertex order (v0, v1, v2, v3 =
+      // (0,0), (1,0), (0,1), (1,1) of the reference square).
+      const std::vector<std::array<unsigned int, 4>> left  = {{{5, 6, 1, 2}},
+                                                              {{8, 5, 0, 1}},
+                                                              {{9, 6, 8, 5}}};
+      const std::vector<std::array<unsigned int, 4>> right = {{{6, 7, 2, 3}},
+                                                              {{7, 10, 3, 4}},
+                                                              {{9, 10, 6, 7}}};
 
-        std::vector<dealii::Point<2>> vertices;
-        for (const auto &x : v)
-          vertices.push_back(c + x);
-        std::vector<dealii::CellData<2>> cells;
-        auto add = [&cells](const std::array<unsigned int, 4> &q) {
-          dealii::CellData<2> cell(4);
-          for (unsigned int i = 0; i < 4; ++i)
-            cell.vertices[i] = q[i];
-          cells.push_back(cell);
-        };
-        for (const auto &q : right)
+      std::vector<dealii::Point<2>> vertices;
+      for (const auto &x : v)
+        vertices.push_back(c + x);
+      std::vector<dealii::CellData<2>> cells;
+      auto add = [&cells](const std::array<unsigned int, 4> &q) {
+        dealii::CellData<2> cell(4);
+        for (unsigned int i = 0; i < 4; ++i)
+          cell.vertices[i] = q[i];
+        cells.push_back(cell);
+      };
+      // The mirror image of a cell: its vertices below y = 0 replaced by
+      // their images, its rows swapped to keep the orientation.
+      auto mirrored = [](const std::array<unsigned int, 4> &q) {
+        const auto m = [](const unsigned int i) { return i < 5 ? i : i + 6; };
+        return std::array<unsigned int, 4>{
+          {m(q[2]), m(q[3]), m(q[0]), m(q[1])}};
+      };
+      for (const auto &q : right)
+        {
           add(q);
-        if (!quarter)
-          for (const auto &q : left)
+          if (whole)
+            add(mirrored(q));
+        }
+      if (!quarter)
+        for (const auto &q : left)
+          {
             add(q);
-        dealii::SubCellData subcell_data;
-        dealii::GridTools::delete_unused_vertices(vertices,
-                                                  cells,
-                                                  subcell_data);
-        // deal.II requires the lines shared by two quadrilaterals to have
-        // the same direction seen from both; without this reordering the
-        // refinement of the coarse cells is garbled (silently, in Release).
-        dealii::GridTools::consistently_order_cells(cells);
-        quads.create_triangulation(vertices, cells, subcell_data);
+            if (whole)
+              add(mirrored(q));
+          }
+      dealii::SubCellData subcell_data;
+      dealii::GridTools::delete_unused_vertices(vertices, cells, subcell_data);
+      // deal.II requires the lines shared by two quadrilaterals to have
+      // the same direction seen from both; without this reordering the
+      // refinement of the coarse cells is garbled (silently, in Release).
+      dealii::GridTools::consistently_order_cells(cells);
+      quads.create_triangulation(vertices, cells, subcell_data);
 
-        quads.set_all_manifold_ids(1);
-        for (const auto &face : quads.active_face_iterators())
-          if (face->at_boundary())
-            {
-              // The curved faces are those whose vertices both lie on the
-              // circle and not on the flat side.
-              const double r0        = (face->vertex(0) - c).norm();
-              const double r1        = (face->vertex(1) - c).norm();
-              const bool   on_circle = std::abs(r0 - r) < 1e-10 * r &&
-                                     std::abs(r1 - r) < 1e-10 * r &&
-                                     face->center()[1] < c[1] - 1e-10 * r;
-              face->set_manifold_id(
-                on_circle ? 0 : dealii::numbers::flat_manifold_id);
-            }
-        quads.set_manifold(0, dealii::PolarManifold<2>(c));
-        dealii::TransfiniteInterpolationManifold<2> transfinite;
-        transfinite.initialize(quads);
-        quads.set_manifold(1, transfinite);
-      }
-    } // namespace
+      quads.set_all_manifold_ids(1);
+      for (const auto &face : quads.active_face_iterators())
+        if (face->at_boundary())
+          {
+            // The curved faces are those whose vertices both lie on the
+            // circle (no straight boundary face has both ends on it).
+            const double r0 = (face->vertex(0) - c).norm();
+            const double r1 = (face->vertex(1) - c).norm();
+            const bool   on_circle =
+              std::abs(r0 - r) < 1e-10 * r && std::abs(r1 - r) < 1e-10 * r;
+            face->set_manifold_id(
+              on_circle ? 0 : dealii::numbers::flat_manifold_id);
+          }
+      quads.set_manifold(0, dealii::PolarManifold<2>(c));
+      dealii::TransfiniteInterpolationManifold<2> transfinite;
+      transfinite.initialize(quads);
+      quads.set_manifold(1, transfinite);
+    }
 
 
 
     template <int dim>
     Disc<dim>::Disc(const bool quarter)
+      : Disc(quarter, /*whole=*/false)
+    {
+    }
+
+
+
+    template <int dim>
+    Disc<dim>::Disc(const bool quarter, const bool whole)
       : CurvedShape<dim>(quarter)
+      , whole(whole)
       , radius(1.)
       , length(1.)
       , n_axial_subdivisions(4)
     {
       Assert(!quarter || dim == 2, dealii::ExcNotImplemented());
+      Assert(!whole || dim == 2, dealii::ExcNotImplemented());
     }
 
 
@@ -205,10 +229,12 @@ namespace dpana
     void
     Disc<dim>::make_quadrilaterals(dealii::Triangulation<2> &quads) const
     {
-      make_half_disc_quads(quads,
-                           dealii::Point<2>(this->centre[0], this->centre[1]),
-                           radius,
-                           this->quarter);
+      make_disc_quadrilaterals(quads,
+                               dealii::Point<2>(this->centre[0],
+                                                this->centre[1]),
+                               radius,
+                               this->quarter,
+                               whole);
     }
 
 

@@ -4,6 +4,7 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/geometry/annulus.h>
 #include <dpana/geometry/brick.h>
+#include <dpana/geometry/circle.h>
 #include <dpana/geometry/disc.h>
 #include <dpana/geometry/geometry.h>
 #include <dpana/geometry/gmsh_file.h>
@@ -48,6 +49,16 @@ namespace dpana
            3,
            &Brick<dim>::declare_parameters,
            [] { return std::make_unique<Brick<dim>>(); }},
+          {"disc",
+           "Disc",
+           2,
+           &Circle<dim>::declare_parameters,
+           [] { return std::make_unique<Circle<dim>>(false); }},
+          {"right half disc",
+           "Right half disc",
+           2,
+           &Circle<dim>::declare_parameters,
+           [] { return std::make_unique<Circle<dim>>(true); }},
           {"half disc",
            "Half disc",
            2,
@@ -114,8 +125,10 @@ namespace dpana
         "Type",
         dim == 2 ? "rectangle" : "box",
         dealii::Patterns::Selection(selection),
-        "The shape of the body. 2D: rectangle, half disc, quarter disc, "
-        "half annulus, quarter annulus, gmsh. 3D: box, half cylinder, gmsh. "
+        "The shape of the body. 2D: rectangle, disc, right half disc (the "
+        "circular body and its half model x >= Centre_x), half disc, quarter "
+        "disc (the D-shaped lower half of a disc and its half model), half "
+        "annulus, quarter annulus, gmsh. 3D: box, half cylinder, gmsh. "
         "The entries of a shape are in the subsection named after its type "
         "(Rectangle, Half disc, ...). See doc/geometry.md for the boundary "
         "names of each type.");

@@ -18,6 +18,26 @@ namespace dpana
       {
         return std::vector<double>(v.begin_raw(), v.end_raw());
       }
+
+
+
+      // The pressure estimates finer than an element (2D), see
+      // scene/pressure_estimators.h.
+      nlohmann::json
+      estimates_to_json(const scene::PressureEstimates &est)
+      {
+        nlohmann::json j = {{"mirrored_half_model", est.mirrored},
+                            {"pressure_resultant", est.resultant},
+                            {"pressure_centroid", est.centroid},
+                            {"moment_half_width", est.moment_half_width}};
+        if (est.fit_available)
+          {
+            j["fit_half_width"]   = est.fit_half_width;
+            j["fit_max_pressure"] = est.fit_max_pressure;
+            j["fit_centre"]       = est.fit_centre;
+          }
+        return j;
+      }
     } // namespace
 
 
@@ -77,6 +97,8 @@ namespace dpana
           {"candidate_edge_warning", summary.candidate_edge_warning},
           {"rigid_displacements",
            std::vector<double>(res.alpha.begin(), res.alpha.end())}};
+      if (summary.estimates.available)
+        j["estimates"] = estimates_to_json(summary.estimates);
       j["zones"] = nlohmann::json::array();
       for (const auto &z : summary.zones)
         {

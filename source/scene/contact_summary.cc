@@ -103,6 +103,44 @@ namespace dpana
           }
         return zones;
       }
+
+
+
+      // The extents along s and the pressures -N of the elements.
+      template <int dim>
+      std::vector<PressureElement>
+      pressure_elements(const contact_surface::ContactSurface<dim> &surface,
+                        const Eigen::VectorXd                      &r)
+      {
+        std::vector<PressureElement> elements;
+        for (unsigned int j = 0; j < surface.n_elements(); ++j)
+          {
+            const auto &e = surface.element(j);
+            elements.push_back({e.s_min, e.s_max, -r(dim * j)});
+          }
+        return elements;
+      }
+
+
+
+      // The log line of the pressure estimates.
+      void
+      print_estimates(const PressureEstimates &est, std::ostream &out)
+      {
+        out << "Estimates finer than an element"
+            << (est.mirrored ?
+                  " (half model mirrored about the candidate centre)" :
+                  "")
+            << ": moment half width a_m = " << est.moment_half_width << " mm";
+        if (est.fit_available)
+          out << ", elliptic fit a_f = " << est.fit_half_width
+              << " mm (p0 = " << est.fit_max_pressure
+              << " MPa, centre s = " << est.fit_centre << ")";
+        else
+          out << ", no elliptic fit";
+        out << "; pressure resultant " << est.resultant
+            << " N/mm, centroid s = " << est.centroid << std::endl;
+      }
     } // namespace
 
 
@@ -129,6 +167,10 @@ namespace dpana
                            summary);
       summary.zones = dim == 2 ? zones_along_s(surface, res.status) :
                                  zone_boxes(surface, res.status);
+      if (dim == 2)
+        summary.estimates =
+          estimate_pressure_profile(pressure_elements(surface, res.r),
+                                    centre * surface.surface_tangents()[0]);
     }
 
 
@@ -155,6 +197,8 @@ namespace dpana
             out << ", t in [" << z.t_from << ", " << z.t_to << "]";
           out << " (" << z.n_elements << " elements)" << std::endl;
         }
+      if (summary.estimates.available)
+        print_estimates(summary.estimates, out);
       if (summary.candidate_edge_warning)
         out << "WARNING: the contact zone reaches the edge of the candidate "
                "surface; enlarge Contact / Candidate half width"

@@ -27,6 +27,60 @@ namespace dpana
       {
         return ref != 0 ? (x - ref) / std::abs(ref) : 0.0;
       }
+
+
+
+      // The radius R of the Hertz formulas, 1/R = 1/R1 + 1/R2, of two
+      // curved surfaces pressed together by a positive load: R2 = 0 is a
+      // plane (R = R1), R2 < 0 a cavity or seat of radius |R2| > R1.
+      double
+      effective_radius(const double load,
+                       const double compliance,
+                       const double radius_1,
+                       const double radius_2)
+      {
+        AssertThrow(load > 0 && compliance > 0 && radius_1 > 0 &&
+                      (radius_2 >= 0 || -radius_2 > radius_1),
+                    dealii::ExcMessage(
+                      "Hertz: the load, the compliance and Radius 1 must be "
+                      "positive, and a cavity larger than Radius 1"));
+        if (radius_2 > 0)
+          return radius_1 * radius_2 / (radius_1 + radius_2);
+        if (radius_2 < 0)
+          return radius_1 * (-radius_2) / (-radius_2 - radius_1);
+        return radius_1;
+      }
+
+
+
+      // Adds to the Hertz comparison @p c the errors of the estimates finer
+      // than an element (pressure_estimators.h) against the Hertz half
+      // width a_H and pressure N_H, to its values and its log line.
+      void
+      add_estimator_errors(Comparison           &c,
+                           const double          a_H,
+                           const double          N_H,
+                           const ContactSummary &summary)
+      {
+        const PressureEstimates &est = summary.estimates;
+        if (!est.available)
+          return;
+        std::ostringstream out;
+        out << std::setprecision(6) << std::showpos << "; a_m "
+            << relative(est.moment_half_width, a_H);
+        c.values.emplace_back("a_moment_error",
+                              relative(est.moment_half_width, a_H));
+        if (est.fit_available)
+          {
+            out << ", a_f " << relative(est.fit_half_width, a_H)
+                << ", p0 of the fit " << relative(est.fit_max_pressure, N_H);
+            c.values.emplace_back("a_fit_error",
+                                  relative(est.fit_half_width, a_H));
+            c.values.emplace_back("fit_max_pressure_error",
+                                  relative(est.fit_max_pressure, N_H));
+          }
+        c.text += out.str();
+      }
     } // namespace
 
 
@@ -37,18 +91,36 @@ namespace dpana
                        const double radius_1,
                        const double radius_2)
     {
-      AssertThrow(load > 0 && compliance > 0 && radius_1 > 0 &&
-                    (radius_2 >= 0 || -radius_2 > radius_1),
-                  dealii::ExcMessage(
-                    "Hertz: the load, the compliance and Radius 1 must be "
-                    "positive, and a cavity larger than the cylinder"));
-      double R = radius_1;
-      if (radius_2 > 0)
-        R = radius_1 * radius_2 / (radius_1 + radius_2);
-      else if (radius_2 < 0)
-        R = radius_1 * (-radius_2) / (-radius_2 - radius_1);
+      const double R = effective_radius(load, compliance, radius_1, radius_2);
       const double a = std::sqrt(4 * load * compliance * R);
       return {a, 2 * load / (M_PI * a)};
+    }
+
+
+
+    HertzPointContact
+    hertz_point_contact(const double load,
+                        const double compliance,
+                        const double radius_1,
+                        const double radius_2)
+    {
+      const double R = effective_radius(load, compliance, radius_1, radius_2);
+      const double a = std::cbrt(3 * load * R * compliance / 4);
+      return {a, 3 * load / (2 * M_PI * a * a), a * a / R};
+    }
+
+
+
+    double
+    moment_contact_radius(const std::vector<PressurePiece> &pieces)
+    {
+      double force = 0, moment = 0;
+      for (const PressurePiece &p : pieces)
+        {
+          force += p.pressure * p.area;
+          moment += p.pressure * p.r2_integral;
+        }
+      return force != 0 ? std::sqrt(2.5 * moment / force) : 0.0;
     }
 
 
@@ -61,10 +133,11 @@ namespace dpana
       prm.enter_subsection("Reference");
       prm.declare_entry("Type",
                         "none",
-                        Selection("none|uniform|hertz"),
+                        Selection("none|uniform|hertz|hertz sphere"),
                         "Reference printed with the results: 'uniform' "
                         "(every element N = Uniform normal traction, T = 0), "
-                        "'hertz' (plane strain Hertz formulas).");
+                        "'hertz' (plane strain Hertz formulas), 'hertz "
+                        "sphere' (3D Hertz formulas of two spheres).");
       prm.declare_entry("Uniform normal traction",
                         "-50",
                         Double(),
@@ -73,7 +146,8 @@ namespace dpana
                         "200000",
                         Double(0.),
                         "Load P per unit length of the whole (not half) "
-                        "model (N/mm).");
+                        "model (N/mm); for 'hertz sphere' the force on the "
+                        "whole sphere (N).");
       prm.declare_entry("Radius 1",
                         "40",
                         Double(0.),
@@ -92,6 +166,13 @@ namespace dpana
                         "0",
                         Double(0.),
                         "-N_max of that table (MPa); 0: none.");
+      prm.declare_entry("Model fraction",
+                        "1",
+                        Double(0., 1.),
+                        "'hertz sphere': the fraction of the whole body "
+                        "that the model holds (0.25 for a quarter model by "
+                        "two symmetry planes); the resultant of the run "
+                        "divided by it is compared with the Hertz load.");
       prm.declare_entry("Comparison file",
                         "",
                         Anything(),
@@ -115,12 +196,18 @@ namespace dpana
       table_half_width        = prm.get_double("Table half width");
       table_max_pressure      = prm.get_double("Table maximum pressure");
       comparison_file         = prm.get("Comparison file");
+      model_fraction          = prm.get_double("Model fraction");
       prm.leave_subsection();
 
-      if (type == "hertz" && !(hertz_load > 0 && radius_1 > 0))
+      if (type == "hertz sphere" && (dim != 3 || !(model_fraction > 0)))
+        throw InputError("Contact / Reference / Type: 'hertz sphere' needs "
+                         "Dimension = 3 and a positive Model fraction");
+      if ((type == "hertz" || type == "hertz sphere") &&
+          !(hertz_load > 0 && radius_1 > 0))
         throw InputError("Contact / Reference: Hertz load and Radius 1 must "
                          "be positive for Type = hertz");
-      if (type == "hertz" && radius_2 < 0 && -radius_2 <= radius_1)
+      if ((type == "hertz" || type == "hertz sphere") && radius_2 < 0 &&
+          -radius_2 <= radius_1)
         throw InputError("Contact / Reference / Radius 2: a cavity radius "
                          "must exceed Radius 1");
       load_comparison_file();
@@ -175,6 +262,8 @@ namespace dpana
       if (type == "hertz")
         for (auto &c : hertz(bodies, summary))
           comparisons.push_back(std::move(c));
+      if (type == "hertz sphere")
+        comparisons.push_back(hertz_sphere(bodies, surface, summary));
       if (!comparison_table.empty())
         comparisons.push_back(comparison_run(surface, summary));
       return comparisons;
@@ -247,6 +336,7 @@ namespace dpana
           {"a_centroid_error", relative(summary.half_width_centroid, a_H)},
           {"N_max_error", relative(N, N_H)}},
          ""}};
+      add_estimator_errors(c[0], a_H, N_H, summary);
       if (table_half_width > 0 || table_max_pressure > 0)
         {
           std::ostringstream t;
@@ -265,6 +355,116 @@ namespace dpana
                        ""});
         }
       return c;
+    }
+
+
+
+    namespace
+    {
+      // A flat face seen on the plane normal to n: its projected area, the
+      // integral of r^2 over that projection (r: the distance from the axis
+      // through x0 along n) and the largest and smallest r of its vertices.
+      // r^2 is quadratic on the face, so the rule of the edge midpoints
+      // integrates it exactly.
+      template <int dim>
+      std::array<double, 4>
+      radial_moments(const contact_surface::Face<dim> &face,
+                     const dealii::Point<dim>         &x0,
+                     const dealii::Tensor<1, dim>     &n)
+      {
+        std::vector<dealii::Tensor<1, dim>> q;
+        double r_min = std::numeric_limits<double>::max(), r_max = 0;
+        for (const auto &x : face.points)
+          {
+            const dealii::Tensor<1, dim> d = x - x0;
+            q.push_back(d - (d * n) * n);
+            r_min = std::min(r_min, q.back().norm());
+            r_max = std::max(r_max, q.back().norm());
+          }
+        const double area = face.area * std::abs(face.normal * n);
+        double       r2   = 0;
+        for (unsigned int i = 0; i < q.size(); ++i)
+          r2 += (0.5 * (q[i] + q[(i + 1) % q.size()])).norm_square();
+        return {{area, area * r2 / q.size(), r_min, r_max}};
+      }
+    } // namespace
+
+
+
+    // The 3D Hertz solution of two spheres against the run: the contact
+    // radius (outer edge of the elements in contact, and the moment
+    // estimate), the maximum pressure and the resultant.
+    template <int dim>
+    Comparison
+    References<dim>::hertz_sphere(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const contact_surface::ContactSurface<dim>    &surface,
+      const ContactSummary                          &summary) const
+    {
+      double compliance = 0;
+      for (const auto &body : bodies)
+        {
+          const double nu = body->material().poissons_ratio();
+          compliance += (1 - nu * nu) / body->material().youngs_modulus();
+        }
+      const HertzPointContact H =
+        hertz_point_contact(hertz_load, compliance, radius_1, radius_2);
+
+      const dealii::Point<dim>   x0 = surface.options().region_centre;
+      std::vector<PressurePiece> pieces;
+      double                     a_edge = 0, a_element = 0;
+      for (unsigned int j = 0; j < summary.n_elements; ++j)
+        {
+          const auto   &e     = surface.element(j);
+          double        r_min = std::numeric_limits<double>::max(), r_max = 0;
+          PressurePiece piece{0, 0, -summary.result.r(dim * j)};
+          for (const unsigned int f : e.faces)
+            {
+              const auto m =
+                radial_moments(surface.get_faces()[f], x0, e.normal);
+              piece.area += m[0];
+              piece.r2_integral += m[1];
+              r_min = std::min(r_min, m[2]);
+              r_max = std::max(r_max, m[3]);
+            }
+          pieces.push_back(piece);
+          if (summary.result.status[j] != contact::ContactStatus::separated &&
+              r_max > a_edge)
+            {
+              a_edge    = r_max;
+              a_element = r_max - r_min;
+            }
+        }
+      const double a_m = moment_contact_radius(pieces);
+      const double P   = summary.normal_resultant / model_fraction;
+      const double N   = summary.max_pressure;
+
+      std::ostringstream out;
+      out << std::setprecision(6)
+          << "Reference (Hertz, spheres): a = " << H.radius
+          << " mm, p0 = " << H.max_pressure << " MPa, approach " << H.approach
+          << " mm, P = " << hertz_load << " N; this run: a = " << a_edge
+          << " mm (outer edge, known to " << a_element << " mm), a_m = " << a_m
+          << " mm, N_max = " << N << " MPa, P = " << P
+          << " N; relative errors: a " << std::showpos
+          << relative(a_edge, H.radius) << ", a_m " << relative(a_m, H.radius)
+          << ", N_max " << relative(N, H.max_pressure) << ", P "
+          << relative(P, hertz_load);
+      return {"hertz sphere",
+              out.str(),
+              {{"a", H.radius},
+               {"N_max", H.max_pressure},
+               {"approach", H.approach},
+               {"load", hertz_load},
+               {"a_edge", a_edge},
+               {"a_edge_element", a_element},
+               {"a_moment", a_m},
+               {"resultant", P},
+               {"a_error", relative(a_edge, H.radius)},
+               {"a_moment_error", relative(a_m, H.radius)},
+               {"N_max_error", relative(N, H.max_pressure)},
+               {"load_error", relative(P, hertz_load)}},
+              ""};
     }
 
 

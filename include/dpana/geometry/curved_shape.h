@@ -12,6 +12,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dpana
@@ -124,6 +125,13 @@ namespace dpana
        */
       virtual dealii::Point<2>
       contact_point() const = 0;
+
+      /**
+       * Further zones refined after the contact refinements, each a point
+       * and its refinement (e.g. the load patch of Circle); none by default.
+       */
+      virtual std::vector<std::pair<dealii::Point<2>, ContactRefinement>>
+      further_refinements() const;
 
       /**
        * The planes z_0 < ... < z_n of the extrusion in 3D (not called in

@@ -13,8 +13,28 @@ namespace dpana
   namespace geometry
   {
     /**
-     * The lower half of a disc, the cylinder of the Hertz scenes, which
-     * touches the ground at its lowest point Centre - (0, Radius): the
+     * The coarse quadrilateral mesh of a disc of centre @p c and radius @p r
+     * described in Disc: the lower half (6 cells), or its part x >= c_x if
+     * @p quarter (3 cells); with @p whole also the mirror image above
+     * y = c_y (the whole disc, 12 cells, or its half x >= c_x, 6 cells), so
+     * that the lowest and the highest point of the circle are vertices.
+     * Manifold 0 is the polar manifold of the circle (its faces), manifold
+     * 1 a transfinite interpolation (the cells).
+     */
+    void
+    make_disc_quadrilaterals(dealii::Triangulation<2> &quads,
+                             const dealii::Point<2>    c,
+                             const double              r,
+                             const bool                quarter,
+                             const bool                whole);
+
+
+
+    /**
+     * The lower half of a disc, a D-shaped body that touches the ground at
+     * its lowest point Centre - (0, Radius) and is loaded on its flat side
+     * (a variant of the cylinder of the Hertz scenes, stiffer than the
+     * circular body of Circle; see doc/geometry.md): the
      * types `half disc` and `quarter disc` (2D, `subsection Half disc`,
      * `subsection Quarter disc`) and `half cylinder` (3D, `subsection Half
      * cylinder`), the half disc extruded along z from the third coordinate
@@ -64,7 +84,14 @@ namespace dpana
       std::string
       description() const override;
 
-    private:
+    protected:
+      /**
+       * The shape of Disc(quarter) and, with @p whole, its mirror image
+       * above the centre too (the circular body of Circle).
+       */
+      Disc(const bool quarter, const bool whole);
+
+      const bool   whole;
       double       radius;
       double       length;
       unsigned int n_axial_subdivisions;

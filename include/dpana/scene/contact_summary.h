@@ -7,6 +7,7 @@
 #include <dpana/contact/problem.h>
 #include <dpana/contact/solver.h>
 #include <dpana/contact_surface/contact_surface.h>
+#include <dpana/scene/pressure_estimators.h>
 
 #include <deal.II/base/point.h>
 
@@ -62,12 +63,15 @@ namespace dpana
       double half_width_centroid = 0;
       // Tangential size of the element that ends the contact zone: with
       // piecewise constant tractions, a is known to this size.
-      double                  half_width_element     = 0;
-      double                  max_pressure           = 0; // max(-N)
-      double                  normal_resultant       = 0; // sum(-N area)
-      bool                    candidate_edge_warning = false;
-      double                  asymmetry = 0; // of A, before symmetrising
-      std::vector<Zone>       zones;
+      double            half_width_element     = 0;
+      double            max_pressure           = 0; // max(-N)
+      double            normal_resultant       = 0; // sum(-N area)
+      bool              candidate_edge_warning = false;
+      double            asymmetry              = 0; // of A, before symmetrising
+      std::vector<Zone> zones;
+      // 2D: the half width to less than one element, the resultant and
+      // the centroid of the pressure.
+      PressureEstimates       estimates;
       std::vector<double>     element_residual; // ||F_j||, MPa
       std::vector<Comparison> comparisons;
     };
@@ -76,7 +80,7 @@ namespace dpana
      * Fills @p summary (whose result is set) from the contact surface of
      * Body 1 and the contact problem: the per-element natural-map residual,
      * the half width measured from @p centre, the maximum pressure, the
-     * normal resultant and the zones.
+     * normal resultant, the zones and, in 2D, the pressure estimates.
      */
     template <int dim>
     void

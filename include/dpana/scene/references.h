@@ -44,6 +44,62 @@ namespace dpana
                        const double radius_2);
 
     /**
+     * The Hertz solution of two spheres pressed together (the 3D Hertz
+     * point contact).
+     */
+    struct HertzPointContact
+    {
+      double radius;       // contact radius a (mm)
+      double max_pressure; // p0 = -N at the centre (MPa)
+      double approach;     // delta, approach of distant points (mm)
+    };
+
+    /**
+     * Two spheres of radii R1 = @p radius_1 and R2 = @p radius_2 (0: a
+     * plane, < 0: a spherical seat of radius |R2| > R1) pressed together by
+     * the force P = @p load (N) touch on a disc of radius a, under the
+     * pressure p(r) = p0 sqrt(1 - r^2 / a^2), with
+     *     a = (3 P R / (4 E*))^(1/3),   1/R = 1/R1 + 1/R2,
+     *     p0 = 3 P / (2 pi a^2),        delta = a^2 / R,
+     * where @p compliance is 1/E* = (1 - nu1^2) / E1 + (1 - nu2^2) / E2
+     * (0 for a rigid body) and delta is the approach of points of the two
+     * bodies far from the contact (Hertz 1882; Johnson, Contact Mechanics,
+     * 1985, section 4.2). The formulas assume a << R (each body a half-space
+     * near the contact, the gap r^2 / (2R) quadratic).
+     */
+    HertzPointContact
+    hertz_point_contact(const double load,
+                        const double compliance,
+                        const double radius_1,
+                        const double radius_2);
+
+    /**
+     * One piece of a pressure distribution on a plane: its area A, the
+     * integral of r^2 over it (r: the distance from the axis of the contact)
+     * and its constant pressure p.
+     */
+    struct PressurePiece
+    {
+      double area;
+      double r2_integral;
+      double pressure;
+    };
+
+    /**
+     * The moment estimate of the contact radius of an axisymmetric Hertz
+     * pressure p0 sqrt(1 - r^2 / a^2) on a disc: the pressure integrates to
+     * 2 pi p0 a^2 / 3 and its second moment to 4 pi p0 a^4 / 15, whose ratio
+     * is 2 a^2 / 5, so that
+     *     a_m = sqrt(5/2 * int r^2 p dA / int p dA)
+     * recovers a exactly from the exact profile, from every sector of the
+     * disc (a quarter model) alike. Applied to the piecewise constant
+     * tractions of a run, the sums over @p pieces replace the integrals.
+     * Returns 0 if the pressure integrates to zero.
+     */
+    double
+    moment_contact_radius(const std::vector<PressurePiece> &pieces);
+
+    /**
      * The references a contact run is compared with, `subsection Contact /
      * subsection Reference`:
      *
@@ -58,6 +114,14 @@ namespace dpana
      *   with R2 = 0 a flat and R2 < 0 a cavity of radius |R2|; in plane stress
      *   the factor 1 - nu^2 drops. With it, the half width and maximum
      *   pressure of a published table (the reference formulation's);
+     * - `hertz sphere` (3D): the Hertz solution of two spheres,
+     *   hertz_point_contact(), with the load P of the whole body and 1/E* =
+     *   sum (1 - nu_i^2) / E_i. The axis of the contact is the line through
+     *   `Candidate centre` along the contact normal; the run's contact
+     *   radius is measured as the outer edge, in r, of the elements in
+     *   contact (known to one element) and by moment_contact_radius(); its
+     *   resultant of -N divided by `Model fraction` (1/4 for a quarter
+     *   model) is compared with P;
      * - a comparison file: a contact.csv of another run (columns s, N, T),
      *   e.g. the plane solution a 3D run should reproduce on its symmetry
      *   plane, interpolated linearly in s.
@@ -96,6 +160,7 @@ namespace dpana
       double      uniform_normal_traction = 0;
       double      hertz_load = 0, radius_1 = 0, radius_2 = 0;
       double      table_half_width = 0, table_max_pressure = 0;
+      double      model_fraction = 1;
       std::string comparison_file;
       // Rows (s, N, T) of the comparison file, sorted by s; empty if none.
       std::vector<std::array<double, 3>> comparison_table;
@@ -109,6 +174,11 @@ namespace dpana
       std::vector<Comparison>
       hertz(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
             const ContactSummary                          &summary) const;
+
+      Comparison
+      hertz_sphere(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                   const contact_surface::ContactSurface<dim>    &surface,
+                   const ContactSummary &summary) const;
 
       Comparison
       comparison_run(const contact_surface::ContactSurface<dim> &surface,

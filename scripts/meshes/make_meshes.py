@@ -1,0 +1,43 @@
+#!/usr/bin/env python3
+"""Makes the gmsh meshes a scene asks for.
+
+    make_meshes.py SCENE.prm
+
+A scene whose mesh is generated says so in its header, one comment line per
+mesh:
+
+    # mesh: meshes/NAME.msh [options of make_sphere.py]
+
+e.g. `# mesh: meshes/hertz_sphere_L4.msh --level 4`. Each such mesh is
+written by make_sphere.py (path relative to the working directory, as the
+scene's `Mesh file`), unless it exists already with the same options.
+./run.sh calls this before every run; a scene without such lines is left
+alone.
+"""
+import os
+import re
+import shlex
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: make_meshes.py SCENE.prm")
+    try:
+        lines = open(sys.argv[1]).read().splitlines()
+    except OSError:
+        return  # dpana itself reports a scene it cannot read
+    for line in lines:
+        match = re.match(r"#\s*mesh:\s*(\S+)(.*)$", line)
+        if not match:
+            continue
+        output, options = match.group(1), shlex.split(match.group(2))
+        subprocess.run([sys.executable, os.path.join(HERE, "make_sphere.py"),
+                        output] + options, check=True)
+
+
+if __name__ == "__main__":
+    main()
