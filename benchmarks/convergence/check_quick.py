@@ -4,8 +4,9 @@
 1. The extrapolation itself: richardson.py recovers q* and p from exact
    sequences q = q* + C h^p, with constant and with varying ratios of h,
    and says "not asymptotic" for an oscillating one.
-2. Three coarse levels of the hertz_rigid_mu0 family (the D-shaped body
-   of prm/hertz_rigid_mu0.prm, 5 contact refinements and 0, 1, 2 global
+2. Three coarse levels of the hertz_rigid_mu0_d_shaped family (the
+   D-shaped body of prm/hertz_rigid_mu0_d_shaped.prm, 5 contact
+   refinements and 0, 1, 2 global
    ones; 1638 to 19150 dofs) against an independent computation of the
    same body: GetFEM (nodal contact, Alart-Curnier, P1 triangles; harness
    getfem/hertz.py --body dshape) at its finest level of the run of
@@ -56,7 +57,7 @@ def check_richardson(fail):
 
 
 def check_hertz(dpana, prm_dir, fail):
-    family = families.BY_NAME["hertz_rigid_mu0"]
+    family = families.BY_NAME["hertz_rigid_mu0_d_shaped"]
     errors = []
     levels = [(h, e) for h, e in family.levels if h in LEVELS]
     for level, (h, edits) in enumerate(levels):

@@ -22,6 +22,9 @@ Adding a family (the circular Hertz body, the 3D sphere, ...) is one more
 entry below.
 """
 
+import os
+import subprocess
+import tempfile
 from dataclasses import dataclass, field
 
 
@@ -62,7 +65,37 @@ def two_body(ns):
             for n in ns]
 
 
-def contact_refinements(ms, body="Body 1", shape="Quarter disc"):
+class SphereMesh:
+    """The gmsh mesh of the quarter sphere of the 3D Hertz scenes at one
+    level (scripts/meshes/make_sphere.py --level L: element sizes
+    2^(-L/2) times those of sphere.geo). path() writes it, once, into a
+    cache directory and returns its absolute path; its making is not
+    timed (dpana reads it in its assembly phase)."""
+
+    def __init__(self, level, *options):
+        self.level, self.options = level, list(options)
+
+    def path(self, prm_dir):
+        cache = os.path.join(tempfile.gettempdir(), "dpana_convergence_meshes")
+        os.makedirs(cache, exist_ok=True)
+        name = "_".join(["sphere", f"L{self.level}"] + [
+            o.replace("=", "").replace("-", "") for o in self.options])
+        out = os.path.join(cache, name + ".msh")
+        script = os.path.join(prm_dir, "..", "scripts", "meshes",
+                              "make_sphere.py")
+        subprocess.run(["python3", script, out, "--level", str(self.level)]
+                       + self.options, check=True, stdout=subprocess.DEVNULL)
+        return out
+
+
+def sphere(levels, bodies=(("Body 1", ()),)):
+    """Quarter spheres at make_sphere.py levels L: h = 2^(-L/2)."""
+    return [(2.0 ** (-level / 2), {
+        f"{body}/Geometry/Gmsh/Mesh file": SphereMesh(level, *options)
+        for body, options in bodies}) for level in levels]
+
+
+def contact_refinements(ms, body="Body 1", shape="Right half disc"):
     """Coarser levels: no global refinement, m < 5 contact refinements;
     h = 2^(5 - m) in the units of global_refinements()."""
     return [(2.0 ** (5 - m), {f"{body}/Geometry/Global refinements": "0",
@@ -116,7 +149,15 @@ for mu in ("mu0", "mu1"):
         global_refinements([6]),
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
-        note="D-shaped body (lower half disc), force at the centre"))
+        note="Circular body (right half disc), force at the far pole"))
+FAMILIES.append(Family(
+    "hertz_rigid_mu0_d_shaped", "hertz_rigid_mu0_d_shaped.prm", 2,
+    contact_refinements([3, 4], shape="Quarter disc")
+    + global_refinements(range(0, 6)), global_refinements([6]),
+    quantities=HERTZ_Q, plot=("N_max", "a_m"),
+    exact={"resultant": 100000.0}, hertz=True,
+    note="D-shaped body (quarter disc below the centre), force at the "
+         "centre"))
 for ratio in ("1", "1e-3", "1e3"):
     for mu in ("mu0", "mu1"):
         FAMILIES.append(Family(
@@ -125,13 +166,20 @@ for ratio in ("1", "1e-3", "1e3"):
             global_refinements([5], TWO),
             quantities=HERTZ_Q, plot=("N_max", "a_m"),
             exact={"resultant": 100000.0}, hertz=True,
-            note="D-shaped body on a graded elastic block"))
+            note="Circular body on a graded elastic block"))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,
         global_refinements(range(0, 5), TWO), global_refinements([5], TWO),
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
-        note="D-shaped body in a cavity R = 120"))
+        note="Circular body in a cavity R = 120"))
+FAMILIES.append(Family(
+    "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
+    sphere(range(0, 5)), sphere([5]),
+    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
+    exact={"resultant": 75000.0},
+    note="Quarter sphere R = 40 on a rigid plane, P = 300 kN (3D Hertz: "
+         "a = 4.050 mm, p0 = 8730 MPa)"))
 
 BY_NAME = {f.name: f for f in FAMILIES}

@@ -18,6 +18,8 @@ per contact element of length or area |e|; compressive N < 0, p = -N):
               int p), exact for the elliptic Hertz law p ~ sqrt(1 - x^2/a^2)
               on [0, a]; each element's integral of x^2 is taken exactly
               over its extent in x (centroid x_c, width w_x: x_c^2 + w_x^2/12);
+              in 3D (contact plane x-z) the radius sqrt(5/2 int r^2 p /
+              int p) of the Hertz disc, r^2 at the element centroids;
   x_p         the centroid of the pressure, int x p / int p (2D);
   uniform_error  max |N - N_exact| / |N_exact| for a scene whose exact
               solution is a uniform traction.
@@ -62,6 +64,11 @@ def traction_quantities(rows, dim, exact_normal=None):
                  zip(force, rows, widths))
         q["x_p"] = m1 / m0
         q["a_m"] = 2 * math.sqrt(m2 / m0)
+    if dim == 3 and q["resultant"] > 0:
+        # Contact plane x-z (contact direction -y): int r^2 p / int p is
+        # 2 a^2 / 5 for the Hertz law p ~ sqrt(1 - r^2/a^2) on a disc.
+        m2 = sum(f * (r["x"] ** 2 + r["z"] ** 2) for f, r in zip(force, rows))
+        q["a_m"] = math.sqrt(2.5 * m2 / q["resultant"])
     if exact_normal is not None:
         q["uniform_error"] = max(abs(r["N"] - exact_normal) for r in rows) \
             / abs(exact_normal)

@@ -72,7 +72,8 @@ cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
 # The families GetFEM also solves: those the sweep is asked for (all by
 # default). They are timed side by side, dpana then GetFEM per family, and
 # every level runs twice, its fastest run kept (the machine may be shared).
-peer_all=(hertz_rigid_mu0 receding_2d_mu0 receding_2d_mu1)
+peer_all=(hertz_rigid_mu0 hertz_rigid_mu0_d_shaped receding_2d_mu0
+  receding_2d_mu1)
 peer=()
 rest=()
 if [ ${#families[@]} -eq 0 ]; then
@@ -93,11 +94,6 @@ for f in "${peer[@]}"; do
   "$python" "$here/sweep.py" --dpana "$build/dpana" --prm-dir "$top/prm" \
     --out "$out" --repeat 2 "${full[@]}" "$f"
   "$python" "$here/getfem/sweep.py" --out "$out" --repeat 2 "${full[@]}" "$f"
-  if [ "$f" = hertz_rigid_mu0 ]; then
-    # The circular body of the reference formulation (GetFEM only).
-    "$python" "$here/getfem/sweep.py" --out "$out" "${full[@]}" \
-      hertz_circle_rigid_mu0
-  fi
 done
 if [ ${#rest[@]} -gt 0 ]; then
   "$python" "$here/sweep.py" --dpana "$build/dpana" --prm-dir "$top/prm" \

@@ -34,6 +34,8 @@ def level_text(family, prm_dir, edits):
         if prm_edit.get_entry(text, path) is None:
             raise SystemExit(f"sweep.py: error: {family.prm} sets no entry "
                              f"'{path}'")
+        if isinstance(value, families.SphereMesh):
+            value = value.path(prm_dir)
         text = prm_edit.set_entry(text, path, value)
     for path, value in (("Output/Directory", "output"),
                         ("Output/Write VTU", "false"),
@@ -49,7 +51,8 @@ def run_level(dpana, family, prm_dir, level, h, edits, timeout):
             f.write(level_text(family, prm_dir, edits))
         start = time.perf_counter()
         try:
-            proc = subprocess.run([dpana, prm], cwd=tmp, capture_output=True,
+            proc = subprocess.run([os.path.abspath(dpana), prm], cwd=tmp,
+                                  capture_output=True,
                                   text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return {"level": level, "h": h, "failed": f"timeout {timeout} s"}
@@ -60,7 +63,9 @@ def run_level(dpana, family, prm_dir, level, h, edits, timeout):
                     "failed": f"exit {proc.returncode}: " + " | ".join(tail)}
         record = run_quantities(os.path.join(tmp, "output"), family.dim,
                                 family.uniform)
-    record.update({"level": level, "h": h, "edits": edits, "wall": wall})
+    record.update({"level": level, "h": h, "wall": wall,
+                   "edits": {k: str(getattr(v, "level", v))
+                             for k, v in edits.items()}})
     return record
 
 

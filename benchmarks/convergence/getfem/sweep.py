@@ -3,12 +3,13 @@
 level, and writes results/getfem_<family>.json in the record format of the
 dpana sweep (code "getfem").
 
-Families (the dpana family each one is compared with, see families.py):
-  hertz_rigid_mu0         hertz.py --body dshape  (the body of dpana's scene)
-  hertz_circle_rigid_mu0  hertz.py --body circle  (the circular body of the
-                          reference formulation; no dpana scene yet)
-  receding_2d_mu0         receding.py
-  receding_2d_mu1         receding.py --mu 1
+Families (each compared with the dpana family of the same name,
+families.py):
+  hertz_rigid_mu0           hertz.py --body circle (the circular body)
+  hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
+                            the centre)
+  receding_2d_mu0           receding.py
+  receding_2d_mu1           receding.py --mu 1
 
   sweep.py --out results [--full] [--repeat N] [FAMILY ...]
 """
@@ -24,10 +25,10 @@ sys.path.insert(0, os.path.dirname(HERE))
 import records as records_io  # noqa: E402  (benchmarks/convergence/)
 # family: (script arguments, default levels, extra levels of --full)
 FAMILIES = {
-    "hertz_rigid_mu0": (["hertz.py", "--body", "dshape"], range(-2, 5),
+    "hertz_rigid_mu0": (["hertz.py", "--body", "circle"], range(-2, 5),
                         [5]),
-    "hertz_circle_rigid_mu0": (["hertz.py", "--body", "circle"],
-                               range(-2, 5), [5]),
+    "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
+                                 range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
     "receding_2d_mu1": (["receding.py", "--mu", "1"], range(0, 6), [6]),
 }
