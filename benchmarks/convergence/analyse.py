@@ -285,8 +285,8 @@ def main():
     plot_all(summary, directory, plt)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     plot_peer(axes, summary)
-    decorate(*axes, "dpana (circles) and GetFEM "
-             "(squares; dotted: GetFEM's circular Hertz body)")
+    decorate(*axes, "dpana (circles, solid) and GetFEM (squares, dashed; "
+             "dotted: GetFEM without a dpana family)")
     fig.tight_layout()
     fig.savefig(os.path.join(directory, "getfem.png"), dpi=80)
     with open(os.path.join(directory, "convergence.md"), "w") as f:
