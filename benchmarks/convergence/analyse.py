@@ -1,0 +1,415 @@
+#!/usr/bin/env python3
+"""Tables and plots of the convergence sweeps in a results directory.
+
+For every family (results/<family>.json, and results/getfem_<family>.json
+where the GetFEM harness ran it) and every quantity of the family:
+the Richardson-extrapolated value of the three finest levels with its
+observed order (richardson.py), the relative error of every level against
+the exact value (where the scene has one) or the extrapolated value, and
+the time to reach 1 % and 0.1 %. Writes results/convergence.md (the
+tables), results/summary.json, results/<family>.png (error against solve
+time and against dofs) and results/speed_vs_error.png (every family) and
+results/getfem.png (dpana and GetFEM on the same axes).
+
+  analyse.py RESULTS_DIR
+"""
+
+import glob
+import json
+import os
+import sys
+
+import families
+import richardson
+
+TOLERANCES = (0.01, 0.001)
+
+
+def load(directory):
+    runs = {}
+    for path in sorted(glob.glob(os.path.join(directory, "*.json"))):
+        with open(path) as f:
+            data = json.load(f)
+        if isinstance(data, dict) and "records" in data:
+            ok = [r for r in data["records"] if "failed" not in r]
+            runs[(data["code"], data["family"])] = {**data, "ok": ok}
+    return runs
+
+
+def relative_errors(values, reference):
+    """|v - reference| / |reference|; a quantity whose exact value is 0 is
+    itself a relative error."""
+    return [abs(v - reference) / abs(reference) if reference else abs(v)
+            for v in values]
+
+
+def study(run, quantity, exact):
+    """Extrapolation, errors and times to tolerance of one quantity."""
+    records = [r for r in run["ok"] if r.get(quantity) is not None]
+    h = [r["h"] for r in records]
+    q = [r[quantity] for r in records]
+    extra = richardson.extrapolate(h, q)
+    reference = exact if exact is not None else extra["value"]
+    errors = relative_errors(q, reference)
+    times = [r["solve_time"] for r in records]
+    # Without an asymptotic extrapolation the finest level is the reference
+    # and the errors are known only down to the difference of the two
+    # finest levels: no time is claimed for a tolerance below it.
+    floor = 0.0
+    if exact is None and extra["order"] is None and len(q) >= 2 and q[-1]:
+        floor = abs(q[-1] - q[-2]) / abs(q[-1])
+    reach = {tol: (richardson.time_to_tolerance(times, errors, tol)
+                   if tol >= floor else "unresolved")
+             for tol in TOLERANCES}
+    return {"quantity": quantity, "values": q, "errors": errors,
+            "times": times, "dofs": [r["dofs"] for r in records],
+            "extrapolated": extra, "exact": exact, "reference": reference,
+            "reach": reach}
+
+
+def fmt_reach(r):
+    if r == "unresolved":
+        return "not resolved"
+    if r is None:
+        return "not reached"
+    t, bound = r
+    return f"≤ {t:.3g}" if bound else f"{t:.3g}"
+
+
+def fmt(v, digits=6):
+    return "—" if v is None else f"{v:.{digits}g}"
+
+
+def level_table(run, studies):
+    qs = [s["quantity"] for s in studies]
+    head = ["level", "h", "dofs", "contact unknowns", "iterations",
+            "solve (s)", "wall (s)", "peak (MB)"]
+    for q in qs:
+        head += [q, f"error {q}"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for i, r in enumerate(run["ok"]):
+        row = [str(r["level"]), f"{r['h']:.4g}", str(r["dofs"]),
+               str(r["contact_unknowns"]), str(r.get("iterations", "")),
+               f"{r['solve_time']:.3g}", f"{r.get('wall', 0):.3g}",
+               fmt(r.get("peak_memory_mb"), 4)]
+        for s in studies:
+            e = s["errors"][i] if i < len(s["errors"]) else None
+            row += [fmt(s["values"][i] if i < len(s["values"]) else None, 7),
+                    "—" if e is None else f"{e:.2e}"]
+        lines.append("| " + " | ".join(row) + " |")
+    return lines
+
+
+def quantity_table(rows):
+    head = ["quantity", "code", "converged value", "order (3 finest)",
+            "order (3 before)", "asymptotic", "Hertz", "time to 1 % (s)",
+            "time to 0.1 % (s)"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for code, s, hertz in rows:
+        x = s["extrapolated"]
+        if s["exact"] is not None:
+            value, order, prev, asym = f"{s['exact']:.7g} (exact)", "—", \
+                "—", "—"
+        else:
+            value = fmt(x["value"], 7)
+            order, prev = fmt(x["order"], 3), fmt(x["previous_order"], 3)
+            asym = "yes" if x["asymptotic"] else "no: " + x["note"]
+        h = "—" if hertz is None else \
+            f"{hertz:.6g} ({(s['reference'] - hertz) / hertz:+.2%})"
+        lines.append("| " + " | ".join([
+            s["quantity"], code, value, order, prev, asym, h,
+            fmt_reach(s["reach"][0.01]), fmt_reach(s["reach"][0.001])]) + " |")
+    return lines
+
+
+def plot_family(ax_t, ax_d, studies, style, label, colour=None):
+    for s in studies:
+        pts = [(t, d, e) for t, d, e in zip(s["times"], s["dofs"],
+                                             s["errors"]) if e and e > 0]
+        if not pts:
+            continue
+        t, d, e = zip(*pts)
+        name = f"{label} {s['quantity']}"
+        ax_t.loglog(t, e, style, label=name, color=colour)
+        ax_d.loglog(d, e, style, label=name, color=colour)
+
+
+def decorate(ax_t, ax_d, title):
+    for ax, xl in ((ax_t, "solve time (s)"), (ax_d, "degrees of freedom")):
+        ax.set_xlabel(xl)
+        ax.set_ylabel("relative error")
+        ax.axhline(0.01, color="grey", lw=0.5, ls=":")
+        ax.axhline(0.001, color="grey", lw=0.5, ls=":")
+        ax.grid(True, which="both", lw=0.2)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=7)
+    ax_t.set_title(title, fontsize=9)
+
+
+def family_of(name):
+    if name in families.BY_NAME:
+        return families.BY_NAME[name]
+    # GetFEM-only families (the circular body): the quantities of the
+    # Hertz scenes.
+    return families.Family(name, "—", 2, [], quantities=families.HERTZ_Q,
+                           plot=("N_max", "a_m"),
+                           exact={"resultant": 100000.0}, hertz=True,
+                           note="circular body, force at the far pole "
+                                "(GetFEM only)")
+
+
+def hertz_values(run):
+    for r in run["ok"]:
+        if "hertz" in r:
+            return r["hertz"]
+    return None
+
+
+def equal_error_ratios(sd, sg):
+    """dpana time / GetFEM time at equal relative error, both against
+    common_reference(); a tolerance below twice the distance between the
+    two converged values is not resolved."""
+    ref, spread = common_reference(sd, sg)
+    out = {}
+    for tol in (0.01, 0.005, 0.002, 0.001):
+        if tol < 2 * spread:
+            out[tol] = "not resolved"
+            continue
+        td, tg = (richardson.time_to_tolerance(
+            s["times"], relative_errors(s["values"], ref), tol)
+            for s in (sd, sg))
+        # A time that is only an upper bound (reached on the coarsest
+        # level) gives no ratio.
+        out[tol] = None if td is None or tg is None or td[1] or tg[1] \
+            else td[0] / tg[0]
+    return out
+
+
+def analyse_runs(runs):
+    """Per family (in the order of families.py) and code: the studies of
+    its quantities, its records and the scene's Hertz values."""
+    order = [f.name for f in families.FAMILIES]
+    names = sorted({name for _, name in runs},
+                   key=lambda n: order.index(n) if n in order else 99)
+    summary = {}
+    for name in names:
+        fam = family_of(name)
+        for code in ("dpana", "getfem"):
+            run = runs.get((code, name))
+            if run is None or len(run["ok"]) == 0:
+                continue
+            # The Hertz values of the scene, from either code's records.
+            hertz = (hertz_values(run) or hertz_values(
+                runs.get(("dpana", name), {"ok": []}))) if fam.hertz \
+                else None
+            summary.setdefault(name, {})[code] = {
+                "studies": [study(run, q, fam.exact.get(q))
+                            for q in fam.quantities
+                            if any(q in r for r in run["ok"])],
+                "records": run["ok"], "hertz": hertz}
+    return summary
+
+
+def family_section(name, codes, directory, plt):
+    """The tables of one family, and its plot <family>.png."""
+    fam = family_of(name)
+    md = [f"## {name}", "", f"Scene `prm/{fam.prm}`. {fam.note}", ""]
+    rows = []
+    fig, (ax_t, ax_d) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for code, style in (("dpana", "o-"), ("getfem", "s--")):
+        if code not in codes:
+            continue
+        c = codes[code]
+        md += [f"{code}:", ""] + level_table(
+            {"ok": c["records"]}, c["studies"]) + [""]
+        for s in c["studies"]:
+            key = "a" if s["quantity"] == "a_m" else s["quantity"]
+            rows.append((code, s, c["hertz"].get(key) if c["hertz"]
+                         else None))
+        plot_family(ax_t, ax_d, [s for s in c["studies"]
+                                 if s["quantity"] in fam.plot], style, code)
+    decorate(ax_t, ax_d, name)
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, f"{name}.png"), dpi=80)
+    plt.close(fig)
+    return md + quantity_table(rows) + ["", f"![{name}]({name}.png)", ""]
+
+
+def plot_all(summary, directory, plt):
+    """speed_vs_error.png: the first plotted quantity of every family
+    (dpana), unless its errors are round-off."""
+    fig, (ax_t, ax_d) = plt.subplots(1, 2, figsize=(12, 5.5))
+    colours = iter(plt.get_cmap("tab20").colors)
+    markers = iter(["o-", "s-", "^-", "v-", "D-", "<-", ">-", "p-"] * 3)
+    for name, codes in summary.items():
+        if "dpana" not in codes:
+            continue
+        first = [s for s in codes["dpana"]["studies"]
+                 if s["quantity"] == family_of(name).plot[0]
+                 and max(s["errors"]) > 1e-8]
+        plot_family(ax_t, ax_d, first, next(markers), name, next(colours))
+    decorate(ax_t, ax_d, "dpana: error of the first quantity of each "
+             "family (against the extrapolated value)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "speed_vs_error.png"), dpi=80)
+    plt.close(fig)
+
+
+def write_summary(summary, directory):
+    """summary.json: per family, code and quantity the converged value,
+    the observed order and the times to 1 % and 0.1 %."""
+    out = {name: {code: {s["quantity"]: {
+        "converged": s["reference"], "order": s["extrapolated"]["order"],
+        "asymptotic": s["extrapolated"]["asymptotic"],
+        "time_1pc": s["reach"][0.01], "time_01pc": s["reach"][0.001]}
+        for s in c["studies"]} for code, c in codes.items()}
+        for name, codes in summary.items()}
+    with open(os.path.join(directory, "summary.json"), "w") as f:
+        json.dump(out, f, indent=1)
+
+
+def main():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    directory = sys.argv[1]
+    runs = load(directory)
+    summary = analyse_runs(runs)
+    loads = sorted({" ".join(r["loadavg"]) for r in runs.values()})
+    md = ["# Convergence sweeps: tables of one run", "",
+          f"Load average at the start of the sweeps: {'; '.join(loads)}.",
+          ""] + overview(summary)
+    for name, codes in summary.items():
+        md += family_section(name, codes, directory, plt)
+    md += comparison_section(summary)
+    plot_all(summary, directory, plt)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    plot_peer(axes, summary)
+    decorate(*axes, "dpana (circles, solid) and GetFEM (squares, dashed; "
+             "dotted: GetFEM without a dpana family)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "getfem.png"), dpi=80)
+    with open(os.path.join(directory, "convergence.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    write_summary(summary, directory)
+    print(f"analyse.py: wrote {directory}/convergence.md")
+
+
+def common_reference(sd, sg):
+    """The value both codes are measured against at equal error: the exact
+    value, or the mean of their converged values; and the relative distance
+    between those."""
+    if sd["exact"] is not None:
+        return sd["exact"], 0.0
+    ref = 0.5 * (sd["reference"] + sg["reference"])
+    return ref, abs(sd["reference"] - sg["reference"]) / abs(ref)
+
+
+def plot_peer(axes, summary):
+    """dpana (circles, solid) and GetFEM (squares, dashed) on the families
+    both solve, against the common reference; GetFEM-only families dotted.
+    Families whose errors are round-off (exact on every level) are left
+    out: the tables give them."""
+    colours = iter(["C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7"])
+    for name, codes in summary.items():
+        if "getfem" not in codes:
+            continue
+        fam = family_of(name)
+        mates = {s["quantity"]: s for s in
+                 codes.get("dpana", {}).get("studies", [])}
+        for sg in codes["getfem"]["studies"]:
+            if sg["quantity"] not in fam.plot or max(sg["errors"]) < 1e-8:
+                continue
+            colour = next(colours)
+            sd = mates.get(sg["quantity"])
+            ref = common_reference(sd, sg)[0] if sd else sg["reference"]
+            pairs = [(sg, "s--" if sd else "s:", "GetFEM")]
+            if sd:
+                pairs.append((sd, "o-", "dpana"))
+            for s, style, code in pairs:
+                pts = [(t, d, e) for t, d, e in zip(
+                    s["times"], s["dofs"], relative_errors(s["values"], ref))
+                    if e > 0]
+                t, d, e = zip(*pts)
+                label = f"{code} {name} {s['quantity']}"
+                axes[0].loglog(t, e, style, color=colour, label=label)
+                axes[1].loglog(d, e, style, color=colour, label=label)
+
+
+def overview(summary):
+    """One row per family and plotted quantity of dpana."""
+    md = ["## Overview (dpana)", "",
+          "| family | quantity | converged value | order | asymptotic | "
+          "Hertz | time to 1 % (s) | time to 0.1 % (s) | finest level: dofs,"
+          " solve (s) |", "|---|---|---|---|---|---|---|---|---|"]
+    for name, codes in summary.items():
+        if "dpana" not in codes:
+            continue
+        fam = family_of(name)
+        last = codes["dpana"]["records"][-1]
+        for s in codes["dpana"]["studies"]:
+            if s["quantity"] not in fam.plot:
+                continue
+            x = s["extrapolated"]
+            exact = s["exact"] is not None
+            value = f"{s['reference']:.7g}" + (" (exact)" if exact else "")
+            hertz = codes["dpana"]["hertz"]
+            key = "a" if s["quantity"] == "a_m" else s["quantity"]
+            h = f"{(s['reference'] - hertz[key]) / hertz[key]:+.2%}" \
+                if hertz and key in hertz else "—"
+            md.append("| " + " | ".join([
+                name, s["quantity"], value,
+                "—" if exact else fmt(x["order"], 3),
+                "—" if exact else ("yes" if x["asymptotic"] else "no"), h,
+                fmt_reach(s["reach"][0.01]), fmt_reach(s["reach"][0.001]),
+                f"{last['dofs']}, {last['solve_time']:.3g}"]) + " |")
+    return md + ["", "![speed against error](speed_vs_error.png)", ""]
+
+
+def comparison_section(summary):
+    md = ["## dpana against GetFEM at equal error", "",
+          "Ratio of solve times, dpana / GetFEM, at equal relative error "
+          "(< 1: dpana faster; both codes measured against the mean of "
+          "their converged values, or the exact value; '—': reached on the "
+          "coarsest level of one code, or not reached).",
+          "", "| family | quantity | 1 % | 0.5 % | 0.2 % | 0.1 % | "
+          "converged dpana | converged GetFEM | difference |",
+          "|---|---|---|---|---|---|---|---|---|"]
+    for name, codes in summary.items():
+        if "getfem" not in codes or "dpana" not in codes:
+            continue
+        sd_all = {s["quantity"]: s for s in codes["dpana"]["studies"]}
+        for sg in codes["getfem"]["studies"]:
+            sd = sd_all.get(sg["quantity"])
+            if sd is None or sg["quantity"] == "resultant":
+                continue
+            ratios = equal_error_ratios(sd, sg)
+            cells = ["—" if v is None else v if isinstance(v, str)
+                     else f"{v:.3g}" for v in ratios.values()]
+            diff = (sd["reference"] - sg["reference"]) / sg["reference"] \
+                if sg["reference"] else sd["reference"] - sg["reference"]
+            md.append("| " + " | ".join(
+                [name, sg["quantity"], *cells, fmt(sd["reference"], 7),
+                 fmt(sg["reference"], 7), f"{diff:+.2e}"]) + " |")
+    md += ["", "Solve times level by level (same h: the same mesh for the "
+           "receding block; the same element size on the contact surface "
+           "for the Hertz bodies, whose meshes differ away from it):", "",
+           "| family | h | dofs dpana | dofs GetFEM | solve dpana (s) | "
+           "solve GetFEM (s) | dpana / GetFEM |",
+           "|---|---|---|---|---|---|---|"]
+    for name, codes in summary.items():
+        if "getfem" not in codes or "dpana" not in codes:
+            continue
+        d = {round(r["h"], 9): r for r in codes["dpana"]["records"]}
+        for g in codes["getfem"]["records"]:
+            r = d.get(round(g["h"], 9))
+            if r is None:
+                continue
+            md.append(f"| {name} | {g['h']:.4g} | {r['dofs']} | {g['dofs']} "
+                      f"| {r['solve_time']:.3g} | {g['solve_time']:.3g} | "
+                      f"{r['solve_time'] / g['solve_time']:.3g} |")
+    return md + ["", "![dpana and GetFEM](getfem.png)", ""]
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""Quick form of the convergence sweeps (a ctest, a few seconds).
+
+1. The extrapolation itself: richardson.py recovers q* and p from exact
+   sequences q = q* + C h^p, with constant and with varying ratios of h,
+   and says "not asymptotic" for an oscillating one.
+2. Three coarse levels of the hertz_rigid_mu0_d_shaped family (the
+   D-shaped body of prm/hertz_rigid_mu0_d_shaped.prm, 5 contact
+   refinements and 0, 1, 2 global
+   ones; 1638 to 19150 dofs) against an independent computation of the
+   same body: GetFEM (nodal contact, Alart-Curnier, P1 triangles; harness
+   getfem/hertz.py --body dshape) at its finest level of the run of
+   README.md (95066 dofs, element size 0.061 mm at the contact), whose
+   values moved by less than 3e-5 (a_m) and 8e-5 (N_max) from the level
+   before: a_m = 8.34183 mm, N_max = 15228.1 MPa. Asserted:
+   - every level carries the whole load: resultant = 100000 N/mm to 1e-9;
+   - the error of a_m decreases from level to level and is below 0.3 % at
+     level 2. Bands: a_m integrates the pressure, whose error concentrates
+     in the element at the contact edge, where p ~ sqrt(a - x); one
+     element of size h there changes int x^2 p by O(h^(3/2)), so halving h
+     should divide the error by about 2^(3/2) = 2.8 once h << a. The
+     run of README.md gives 0.57 %, 0.24 %, 0.065 % at levels 0, 1, 2
+     (4.3, 8.5, 17 contact elements over the half width); the bound 0.3 %
+     leaves a factor 4.6;
+   - N_max at level 2 within 0.3 % of N_MAX_REF (the run: 0.10 %; the
+     piecewise constant traction of dpana's first element and GetFEM's
+     largest nodal pressure both tend to the pressure at the axis).
+   The two codes solve the same continuous problem, so their converged
+   values agree within their discretisation errors (README.md).
+
+  check_quick.py --dpana BUILD/dpana --prm-dir prm
+"""
+
+import argparse
+import sys
+
+import families
+import richardson
+from sweep import run_level
+
+A_M_REF = 8.34183
+N_MAX_REF = 15228.1
+LEVELS = (1.0, 0.5, 0.25)    # h of the levels: 0, 1, 2 global refinements
+
+
+def check_richardson(fail):
+    for h in ([1, 0.5, 0.25, 0.125], [1.0, 0.6, 0.3, 0.2]):
+        for p in (0.5, 1.0, 1.5, 2.0):
+            q = [7.0 + 3.0 * x ** p for x in h]
+            r = richardson.extrapolate(h, q)
+            if abs(r["value"] - 7.0) > 1e-8 or abs(r["order"] - p) > 1e-6 \
+                    or not r["asymptotic"]:
+                fail(f"richardson: h = {h}, p = {p}: got {r}")
+    r = richardson.extrapolate([1, 0.5, 0.25], [1.0, 2.0, 1.5])
+    if r["asymptotic"] or r["order"] is not None:
+        fail(f"richardson: oscillating sequence taken as asymptotic: {r}")
+
+
+def check_hertz(dpana, prm_dir, fail):
+    family = families.BY_NAME["hertz_rigid_mu0_d_shaped"]
+    errors = []
+    levels = [(h, e) for h, e in family.levels if h in LEVELS]
+    for level, (h, edits) in enumerate(levels):
+        r = run_level(dpana, family, prm_dir, level, h, edits, 300)
+        if "failed" in r:
+            fail(f"hertz level {level}: {r['failed']}")
+            return
+        if abs(r["resultant"] - 1e5) > 1e-9 * 1e5:
+            fail(f"hertz level {level}: resultant {r['resultant']}")
+        errors.append(abs(r["a_m"] - A_M_REF) / A_M_REF)
+        print(f"level {level}: dofs {r['dofs']}, a_m {r['a_m']:.6f} "
+              f"(error {errors[-1]:.2e}), N_max {r['N_max']:.6g}")
+    if any(e1 >= e0 for e0, e1 in zip(errors, errors[1:])):
+        fail(f"a_m errors do not decrease: {errors}")
+    if errors[-1] > 3e-3:
+        fail(f"a_m error at level 2: {errors[-1]:.2e} > 3e-3")
+    n_error = abs(r["N_max"] - N_MAX_REF) / N_MAX_REF
+    if n_error > 3e-3:
+        fail(f"N_max error at level 2: {n_error:.2e} > 3e-3")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--dpana", required=True)
+    parser.add_argument("--prm-dir", required=True)
+    args = parser.parse_args()
+    failures = []
+
+    def fail(message):
+        print("FAIL: " + message)
+        failures.append(message)
+
+    check_richardson(fail)
+    check_hertz(args.dpana, args.prm_dir, fail)
+    print("check_quick: " + ("FAILED" if failures else "passed"))
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,185 @@
+"""The scene families of the convergence sweeps: one entry per family.
+
+A family is a scene file of prm/ and its refinement levels. A level is a
+mesh size h (any length proportional to the element size on the contact
+surface: only ratios of h enter the extrapolation) and the entries of the
+scene file it changes. `levels` is the default sweep (its finest level takes
+about a minute of dpana time or less on a 2-core machine); `full` adds finer
+levels for `--full`.
+
+`quantities` are the answers that are tabulated and extrapolated (see
+quantities.py); `plot` the ones drawn in the speed-against-error plots,
+the first in the plot of all families (the pressure centroid for the two
+bodies, whose N_max sits on a singular edge).
+`exact` gives the exact value of a quantity where the problem has one; the
+others are measured against their Richardson-extrapolated value. `hertz`
+marks the scenes whose summary carries the plane Hertz formulas, shown next
+to the extrapolated a, a_m and N_max (Hertz assumes a << R; here a/R is
+0.2-0.4, so the converged answer need not equal it). `uniform` is the exact
+uniform normal traction of a scene that has one.
+
+Adding a family (the circular Hertz body, the 3D sphere, ...) is one more
+entry below.
+"""
+
+import os
+import subprocess
+import tempfile
+from dataclasses import dataclass, field
+
+
+@dataclass
+class Family:
+    name: str
+    prm: str
+    dim: int
+    levels: list          # [(h, {entry path: value})], coarse to fine
+    full: list = field(default_factory=list)
+    quantities: tuple = ("N_max", "N_first", "resultant")
+    plot: tuple = ("N_max",)
+    exact: dict = field(default_factory=dict)
+    hertz: bool = False
+    uniform: float = None
+    note: str = ""
+
+
+def rectangle(n, body="Body 1"):
+    return {f"{body}/Geometry/Rectangle/Subdivisions": f"{n}, {n}"}
+
+
+def receding_2d(ns):
+    """The half block 40 x 40: n x n squares, 2 triangles each; h = 40/n."""
+    return [(40.0 / n, rectangle(n)) for n in ns]
+
+
+def receding_3d(ks):
+    """The quarter block 40 x 40 x 40: k x k/2 x k bricks of 5 tetrahedra."""
+    return [(40.0 / k, {"Body 1/Geometry/Box/Subdivisions":
+                        f"{k}, {k // 2}, {k}"}) for k in ks]
+
+
+def two_body(ns):
+    """Block n x n on the foundation 2n x 2n: equal element sizes on the
+    contact surface, h = 40/n."""
+    return [(40.0 / n, {**rectangle(n), **rectangle(2 * n, "Body 2")})
+            for n in ns]
+
+
+class SphereMesh:
+    """The gmsh mesh of the quarter sphere of the 3D Hertz scenes at one
+    level (scripts/meshes/make_sphere.py --level L: element sizes
+    2^(-L/2) times those of sphere.geo). path() writes it, once, into a
+    cache directory and returns its absolute path; its making is not
+    timed (dpana reads it in its assembly phase)."""
+
+    def __init__(self, level, *options):
+        self.level, self.options = level, list(options)
+
+    def path(self, prm_dir):
+        cache = os.path.join(tempfile.gettempdir(), "dpana_convergence_meshes")
+        os.makedirs(cache, exist_ok=True)
+        name = "_".join(["sphere", f"L{self.level}"] + [
+            o.replace("=", "").replace("-", "") for o in self.options])
+        out = os.path.join(cache, name + ".msh")
+        script = os.path.join(prm_dir, "..", "scripts", "meshes",
+                              "make_sphere.py")
+        subprocess.run(["python3", script, out, "--level", str(self.level)]
+                       + self.options, check=True, stdout=subprocess.DEVNULL)
+        return out
+
+
+def sphere(levels, bodies=(("Body 1", ()),)):
+    """Quarter spheres at make_sphere.py levels L: h = 2^(-L/2)."""
+    return [(2.0 ** (-level / 2), {
+        f"{body}/Geometry/Gmsh/Mesh file": SphereMesh(level, *options)
+        for body, options in bodies}) for level in levels]
+
+
+def contact_refinements(ms, body="Body 1", shape="Right half disc"):
+    """Coarser levels: no global refinement, m < 5 contact refinements;
+    h = 2^(5 - m) in the units of global_refinements()."""
+    return [(2.0 ** (5 - m), {f"{body}/Geometry/Global refinements": "0",
+                              f"{body}/Geometry/{shape}/Contact refinements":
+                              str(m)}) for m in ms]
+
+
+def global_refinements(gs, bodies=("Body 1",)):
+    """Every cell of the graded meshes halved once per level: h = 2^-g."""
+    return [(2.0 ** -g, {f"{b}/Geometry/Global refinements": str(g)
+                         for b in bodies}) for g in gs]
+
+
+HERTZ_Q = ("N_max", "a_m", "a", "resultant")
+BLOCK_Q = ("N_max", "N_first", "x_p", "a", "resultant")
+TWO = ("Body 1", "Body 2")
+
+FAMILIES = [
+    Family("receding_2d_mu0", "receding_2d_mu0.prm", 2,
+           receding_2d([4, 8, 16, 32, 64, 128]), receding_2d([256, 512]),
+           quantities=("N_max", "uniform_error", "resultant"),
+           exact={"N_max": 50.0, "uniform_error": 0.0, "resultant": 2000.0},
+           uniform=-50.0,
+           note="exact uniform state N = -50 MPa: P1 elements reproduce it"),
+    Family("receding_2d_mu1", "receding_2d_mu1.prm", 2,
+           receding_2d([4, 8, 16, 32, 64, 128]), receding_2d([256, 512]),
+           quantities=BLOCK_Q, plot=("N_max", "x_p"),
+           exact={"resultant": 2000.0}),
+    Family("receding_3d_L80", "receding_3d_L80.prm", 3,
+           receding_3d([4, 8, 12, 16, 24, 32]), receding_3d([48]),
+           quantities=("N_max", "N_first", "resultant"),
+           plot=("N_max", "N_first"), exact={"resultant": 80000.0}),
+    Family("two_body_ratio_1", "two_body_ratio_1.prm", 2,
+           two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
+           quantities=BLOCK_Q, plot=("x_p", "N_max"),
+           exact={"resultant": 2000.0}),
+    Family("two_body_ratio_1e-3", "two_body_ratio_1e-3.prm", 2,
+           two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
+           quantities=BLOCK_Q, plot=("x_p", "N_max"),
+           exact={"resultant": 2000.0}),
+    Family("two_body_ratio_1e3", "two_body_ratio_1e3.prm", 2,
+           two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
+           quantities=BLOCK_Q, plot=("x_p", "N_max"),
+           exact={"resultant": 2000.0}),
+]
+
+for mu in ("mu0", "mu1"):
+    FAMILIES.append(Family(
+        f"hertz_rigid_{mu}", f"hertz_rigid_{mu}.prm", 2,
+        contact_refinements([3, 4]) + global_refinements(range(0, 6)),
+        global_refinements([6]),
+        quantities=HERTZ_Q, plot=("N_max", "a_m"),
+        exact={"resultant": 100000.0}, hertz=True,
+        note="Circular body (right half disc), force at the far pole"))
+FAMILIES.append(Family(
+    "hertz_rigid_mu0_d_shaped", "hertz_rigid_mu0_d_shaped.prm", 2,
+    contact_refinements([3, 4], shape="Quarter disc")
+    + global_refinements(range(0, 6)), global_refinements([6]),
+    quantities=HERTZ_Q, plot=("N_max", "a_m"),
+    exact={"resultant": 100000.0}, hertz=True,
+    note="D-shaped body (quarter disc below the centre), force at the "
+         "centre"))
+for ratio in ("1", "1e-3", "1e3"):
+    for mu in ("mu0", "mu1"):
+        FAMILIES.append(Family(
+            f"hertz_ratio_{ratio}_{mu}", f"hertz_ratio_{ratio}_{mu}.prm", 2,
+            global_refinements(range(0, 5), TWO),
+            global_refinements([5], TWO),
+            quantities=HERTZ_Q, plot=("N_max", "a_m"),
+            exact={"resultant": 100000.0}, hertz=True,
+            note="Circular body on a graded elastic block"))
+for mu in ("mu0", "mu1"):
+    FAMILIES.append(Family(
+        f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,
+        global_refinements(range(0, 5), TWO), global_refinements([5], TWO),
+        quantities=HERTZ_Q, plot=("N_max", "a_m"),
+        exact={"resultant": 100000.0}, hertz=True,
+        note="Circular body in a cavity R = 120"))
+FAMILIES.append(Family(
+    "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
+    sphere(range(0, 5)), sphere([5]),
+    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
+    exact={"resultant": 75000.0},
+    note="Quarter sphere R = 40 on a rigid plane, P = 300 kN (3D Hertz: "
+         "a = 4.050 mm, p0 = 8730 MPa)"))
+
+BY_NAME = {f.name: f for f in FAMILIES}

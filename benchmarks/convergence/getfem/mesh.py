@@ -1,0 +1,70 @@
+"""Meshes of the Hertz cylinder for the GetFEM harness, made by gmsh.
+
+Two bodies, both the half x >= 0 of a cylinder of radius R whose lowest
+point (0, 0) touches the plane y = 0 (centre (0, R)):
+  circle  the half of the full circular body, the body of the reference
+          formulation; its edge on the axis runs from (0, 0) to (0, 2R);
+  dshape  the lower half of that half, the quarter disc below the centre
+          (the body of dpana's hertz_* scenes); its edges are the axis
+          (0, 0)-(0, R) and the flat side y = R.
+Element size h_c within the distance rho of the contact point, growing
+linearly to h_far at the distance 2 rho (gmsh Distance and Threshold
+fields), P1 triangles.
+"""
+
+import os
+import subprocess
+
+GEO = """// {body}: half cylinder x >= 0 of radius {R} touching y = 0 at (0, 0)
+R = {R};
+Point(1) = {{0, 0, 0}};
+Point(2) = {{0, R, 0}};
+Point(3) = {{R, R, 0}};
+Point(4) = {{0, 2 * R, 0}};
+Circle(1) = {{1, 2, 3}};
+{outline}
+Field[1] = Distance;
+Field[1].PointsList = {{1}};
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = {hc};
+Field[2].SizeMax = {hfar};
+Field[2].DistMin = {rho};
+Field[2].DistMax = {rho2};
+Background Field = 2;
+Mesh.MeshSizeExtendFromBoundary = 0;
+Mesh.MeshSizeFromPoints = 0;
+Mesh.MeshSizeFromCurvature = 0;
+Mesh.Algorithm = 6;
+Mesh.MshFileVersion = 2.2;
+"""
+
+OUTLINES = {
+    # arc (0,0)-(R,R), arc (R,R)-(0,2R), axis (0,2R)-(0,R)-(0,0)
+    "circle": """Circle(2) = {3, 2, 4};
+Line(3) = {4, 2};
+Line(4) = {2, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Physical Surface(1) = {1};""",
+    # arc (0,0)-(R,R), flat side (R,R)-(0,R), axis (0,R)-(0,0)
+    "dshape": """Line(2) = {3, 2};
+Line(4) = {2, 1};
+Curve Loop(1) = {1, 2, 4};
+Plane Surface(1) = {1};
+Physical Surface(1) = {1};""",
+}
+
+
+def hertz_mesh(body, radius, hc, hfar, rho, directory):
+    """Writes and meshes the .geo of body; returns the path of the .msh."""
+    if body not in OUTLINES:
+        raise ValueError(f"unknown body '{body}' (circle, dshape)")
+    geo = os.path.join(directory, f"{body}.geo")
+    msh = os.path.join(directory, f"{body}.msh")
+    with open(geo, "w") as f:
+        f.write(GEO.format(body=body, R=radius, outline=OUTLINES[body],
+                           hc=hc, hfar=hfar, rho=rho, rho2=2 * rho))
+    subprocess.run(["gmsh", "-2", "-v", "1", geo, "-o", msh], check=True,
+                   stdout=subprocess.DEVNULL)
+    return msh

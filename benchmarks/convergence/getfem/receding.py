@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""GetFEM harness: the receding block of prm/receding_2d_mu0.prm (and, with
+--mu 1, of receding_2d_mu1.prm: Coulomb friction by the same nodal brick).
+Half block 40 x 40 mm (symmetry u_x = 0 on x = 0), E = 130000 MPa,
+nu = 0.2, plane strain, 50 MPa on the top, 100 MPa on the right side, on
+the rigid plane y = 0. Level L: n = 4 * 2^L squares per side, each split
+into two P1 triangles (the mesh of dpana's rectangle with n subdivisions;
+GetFEM's 'regular simplices'). The exact solution is the uniform stress
+state sigma_yy = -50 MPa: every nodal pressure is 50 MPa (frictionless).
+
+Prints one JSON record (see hertz.py), with uniform_error =
+max |p - 50| / 50 over the contact nodes.
+"""
+
+import argparse
+import json
+import sys
+import time
+
+import numpy as np
+
+from contact_model import ElasticBody, boundary_faces, pressure_quantities
+
+L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
+BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--level", type=int, required=True)
+    parser.add_argument("--mu", type=float, default=0.0,
+                        help="friction coefficient (receding_2d_mu1: 1)")
+    args = parser.parse_args()
+    n = 4 * 2 ** args.level
+    import getfem as gf
+    start = time.perf_counter()
+    grid = np.linspace(0.0, L, n + 1)
+    mesh = gf.Mesh("regular simplices", grid, grid)
+    tol = 1e-9 * L
+    mesh.set_region(BOTTOM, boundary_faces(mesh, lambda x, y: y < tol))
+    mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y: x < tol))
+    mesh.set_region(UPPER, boundary_faces(mesh, lambda x, y: y > L - tol))
+    mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
+    body = ElasticBody(mesh, E, NU)
+    body.symmetry(LEFT)
+    body.md.add_initialized_data("top", [0.0, -TOP])
+    body.md.add_source_term_brick(body.mim, "u", "top", UPPER)
+    body.md.add_initialized_data("side", [-SIDE, 0.0])
+    body.md.add_source_term_brick(body.mim, "u", "side", RIGHT)
+    body.contact(BOTTOM, E, args.mu)
+    # GetFEM's residual divides the rows of the contact conditions by r:
+    # with friction, a tolerance of 1e-8 of the load let Newton stop on a
+    # wrong active set (tensile multipliers of up to 4 N at n = 64); 1e-10
+    # of the load converges on the right one, above the round-off floor.
+    nit, converged = body.solve(1e-10 * TOP * L)
+    x, force, p = body.nodal_pressures()
+    record = {"dofs": int(body.mfu.nbdof()),
+              "contact_unknowns": len(body.contact_dofs),
+              "iterations": nit, "converged": converged, "n": n}
+    record.update(pressure_quantities(x, force, p))
+    record["uniform_error"] = float(np.abs(p - TOP).max() / TOP)
+    record["solve_time"] = time.perf_counter() - start
+    json.dump(record, sys.stdout)
+    print()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Runs the GetFEM harness over its refinement levels, one process per
+level, and writes results/getfem_<family>.json in the record format of the
+dpana sweep (code "getfem").
+
+Families (each compared with the dpana family of the same name,
+families.py):
+  hertz_rigid_mu0           hertz.py --body circle (the circular body)
+  hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
+                            the centre)
+  receding_2d_mu0           receding.py
+  receding_2d_mu1           receding.py --mu 1
+
+  sweep.py --out results [--full] [--repeat N] [FAMILY ...]
+"""
+
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+import records as records_io  # noqa: E402  (benchmarks/convergence/)
+# family: (script arguments, default levels, extra levels of --full)
+FAMILIES = {
+    "hertz_rigid_mu0": (["hertz.py", "--body", "circle"], range(-2, 5),
+                        [5]),
+    "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
+                                 range(-2, 5), [5]),
+    "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
+    "receding_2d_mu1": (["receding.py", "--mu", "1"], range(0, 6), [6]),
+}
+H = {"hertz.py": lambda level: 2.0 ** -level,
+     "receding.py": lambda level: 40.0 / (4 * 2 ** level)}
+
+
+def run_level(python, args, level, timeout):
+    start = time.perf_counter()
+    try:
+        proc = subprocess.run([python, *args, "--level", str(level)],
+                              cwd=HERE, capture_output=True, text=True,
+                              timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return {"level": level, "failed": f"timeout {timeout} s"}
+    wall = time.perf_counter() - start
+    if proc.returncode != 0:
+        return {"level": level, "failed": proc.stderr[-300:]}
+    record = json.loads(proc.stdout.strip().splitlines()[-1])
+    record.update({"level": level, "h": H[args[0]](level), "wall": wall})
+    return record
+
+
+def run(python, family, full, timeout, repeat):
+    """The levels of family, each run repeat times, the fastest kept."""
+    args, levels, extra = FAMILIES[family]
+    records = []
+    for level in list(levels) + (list(extra) if full else []):
+        records.append(records_io.fastest(
+            [run_level(python, args, level, timeout)
+             for _ in range(repeat)]))
+        if not records_io.progress(records[-1]):
+            break
+    return records
+
+
+def main():
+    args = records_io.parser(__doc__.splitlines()[0]).parse_args()
+    names = args.family or list(FAMILIES)
+    for name in names:
+        if name not in FAMILIES:
+            sys.exit(f"getfem/sweep.py: error: unknown family {name}")
+    os.makedirs(args.out, exist_ok=True)
+    load = records_io.load_average()
+    for name in names:
+        print(f"== GetFEM {name}", flush=True)
+        records = run(sys.executable, name, args.full, args.timeout,
+                      args.repeat)
+        records_io.write(args.out, name, "getfem", records, load)
+
+
+if __name__ == "__main__":
+    main()
