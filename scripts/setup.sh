@@ -18,12 +18,13 @@ packages=(
   libdeal.ii-dev        # finite elements (deal.II 9.4)
   libeigen3-dev         # dense algebra and the CHOLMOD interface
   libsuitesparse-dev    # CHOLMOD sparse Cholesky
+  libopenblas-dev       # the BLAS of the dense products of the condensation
   nlohmann-json3-dev    # summary.json
   libgtest-dev          # unit tests
   numdiff               # regression runs compared with reference output
   python3 python3-matplotlib python3-numpy # plots of results and benchmarks
   libsiconos-numerics-dev # independent contact solvers for cross-checks
-  gmsh                  # meshes of the tutorial steps made from .geo files
+  gmsh                  # meshes made from .geo files (tutorials, 3D Hertz sphere)
   clang-format
 )
 
