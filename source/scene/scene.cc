@@ -8,6 +8,7 @@
 #include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
 #include <dpana/parameters/list_syntax.h>
+#include <dpana/scene/held_by_contact.h>
 #include <dpana/scene/scene.h>
 
 #include <deal.II/base/utilities.h>
@@ -245,6 +246,7 @@ namespace dpana
       problem_ = condensation::assemble_contact_problem(
         parts, *surfaces[0], law.friction, law.cone, law.polygon_sides);
       summary_.asymmetry = condensation::largest_asymmetry(parts);
+      check_held_by_contact(bodies, problem_);
       if (quiet)
         return;
       std::cout << "        Condensation: " << problem_.n_elements()
