@@ -8,7 +8,7 @@
 #include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
 #include <dpana/parameters/list_syntax.h>
-#include <dpana/scene/held_by_contact.h>
+#include <dpana/scene/input_checks.h>
 #include <dpana/scene/scene.h>
 
 #include <deal.II/base/utilities.h>
@@ -93,6 +93,7 @@ namespace dpana
           solver.parse_parameters(prm);
           references.parse_parameters(prm);
           prm.leave_subsection();
+          check_contact_boundaries_free(bodies, surface_parameters.boundary);
         }
       prm.enter_subsection("Output");
       output_parameters.parse_parameters(prm);
@@ -153,6 +154,8 @@ namespace dpana
                 std::cout << " " << m.description;
             }
           std::cout << std::endl;
+          for (const auto &w : body->warnings())
+            std::cout << "        warning: " << w << std::endl;
           for (const auto &cf : body->applied_concentrated_forces())
             std::cout << "        " << body->name() << ": concentrated force ("
                       << cf.force << ") requested at (" << cf.requested_point
@@ -422,6 +425,9 @@ namespace dpana
       summary["bodies"]      = nlohmann::json::array();
       for (const auto &body : bodies)
         summary["bodies"].push_back(output::to_json(*body));
+      for (const auto &body : bodies)
+        for (const auto &w : body->warnings())
+          summary["warnings"].push_back(w);
       if (with_contact)
         {
           summary["contact"] = output::to_json(summary_, dim);

@@ -1,13 +1,15 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
-#ifndef dpana_scene_held_by_contact_h
-#define dpana_scene_held_by_contact_h
+#ifndef dpana_scene_input_checks_h
+#define dpana_scene_input_checks_h
 
 #include <dpana/body/body.h>
 #include <dpana/contact/problem.h>
 
+#include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace dpana
@@ -36,6 +38,19 @@ namespace dpana
     void
     check_held_by_contact(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
                           const contact::ContactProblem &problem);
+
+    /**
+     * The contact boundary of a body must be free to move: a symmetry,
+     * fixed or prescribed condition on the boundary named by Contact /
+     * Boundary b+1 would hold what the contact is to carry (a symmetry
+     * condition on it gives a contact zone of width zero). Throws
+     * dpana::InputError naming the condition's parameter and the boundary.
+     */
+    template <int dim>
+    void
+    check_contact_boundaries_free(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const std::array<std::string, 2>              &contact_boundaries);
   } // namespace scene
 } // namespace dpana
 

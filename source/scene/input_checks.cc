@@ -3,7 +3,8 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/contact/feasibility.h>
-#include <dpana/scene/held_by_contact.h>
+#include <dpana/parameters/parameters.h>
+#include <dpana/scene/input_checks.h>
 
 #include <cmath>
 #include <sstream>
@@ -91,11 +92,37 @@ namespace dpana
 
 
 
+    template <int dim>
+    void
+    check_contact_boundaries_free(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const std::array<std::string, 2>              &contact_boundaries)
+    {
+      for (unsigned int b = 0; b < bodies.size() && b < 2; ++b)
+        for (const auto &[boundary, parameter] :
+             bodies[b]->boundary_conditions().used_boundaries())
+          if (boundary == contact_boundaries[b])
+            throw InputError(parameter + ": " + parameters::quote(boundary) +
+                             " is the contact boundary of " +
+                             bodies[b]->name() + " (Contact / Boundary " +
+                             std::to_string(b + 1) +
+                             "); a kinematic condition there holds what the "
+                             "contact is to carry");
+    }
+
+
+
     template void
     check_held_by_contact(const std::vector<std::unique_ptr<Body<2>>> &,
                           const contact::ContactProblem &);
     template void
     check_held_by_contact(const std::vector<std::unique_ptr<Body<3>>> &,
                           const contact::ContactProblem &);
+    template void
+    check_contact_boundaries_free(const std::vector<std::unique_ptr<Body<2>>> &,
+                                  const std::array<std::string, 2> &);
+    template void
+    check_contact_boundaries_free(const std::vector<std::unique_ptr<Body<3>>> &,
+                                  const std::array<std::string, 2> &);
   } // namespace scene
 } // namespace dpana
