@@ -39,9 +39,8 @@ NAMES = ["bottom", "top", "left", "right", "curved", "axis", "Body 2",
          "Contact", "Contakt", "rectangle", "gmsh", "box", "x", "y", "z",
          "all", "nonexistent", "\x1b[31mred", "é", "a:b", "1, 2", ";", "="]
 
-# The fixed scenes that read a mutated gmsh file "mesh.msh".
-GMSH_SCENES = {
-    2: """set Dimension = 2
+# The fixed scene that reads a mutated gmsh file "mesh.msh".
+GMSH_SCENE = """set Dimension = {dim}
 subsection Body 1
   subsection Geometry
     set Type = gmsh
@@ -53,27 +52,10 @@ subsection Body 1
     set Fixed = {fixed}: all
   end
   subsection Loads
-    set Body force = 0, -1
+    set Body force = {force}
   end
 end
-""",
-    3: """set Dimension = 3
-subsection Body 1
-  subsection Geometry
-    set Type = gmsh
-    subsection Gmsh
-      set Mesh file = mesh.msh
-    end
-  end
-  subsection Boundary conditions
-    set Fixed = {fixed}: all
-  end
-  subsection Loads
-    set Body force = 0, 0, -1
-  end
-end
-""",
-}
+"""
 MESHES = {"rectangle_2x1_v22.msh": (2, "left"),
           "rectangle_2x1_v41.msh": (2, "left"),
           "plate_with_hole_v22.msh": (2, "outer"),
@@ -117,7 +99,8 @@ def load_corpus(source):
                        extra))
     for mesh, (dim, fixed) in sorted(MESHES.items()):
         with open(os.path.join(source, "tests", "data", mesh), "rb") as h:
-            scene = GMSH_SCENES[dim].replace("{fixed}", fixed)
+            scene = GMSH_SCENE.format(dim=dim, fixed=fixed,
+                                      force="0, -1" if dim == 2 else "0, 0, -1")
             corpus.append((mesh, h.read(), "msh", {"scene.prm": scene.encode()}))
     return corpus
 
@@ -237,7 +220,8 @@ def main():
                 with open(os.path.join(keep, f), "wb") as h:
                     h.write(content)
             print("FAIL %03d %s (%s): %s; stderr: %s" %
-                  (k, name, how, "; ".join(problems), err[:300].strip()))
+                  (k, name, how, "; ".join(problems), err[:300].strip()),
+                  flush=True)
     shutil.rmtree(os.path.join(work, "run"), ignore_errors=True)
     print("fuzz: %d runs (%d unmutated), seed %d: exit 0: %d, exit 1: %d, "
           "exit 2: %d, broken rules: %d" %
