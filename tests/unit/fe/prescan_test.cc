@@ -77,11 +77,14 @@ TEST(PreScan, SameReadingAsTheParameterHandler)
   const std::string        file = write_file("continued.prm",
                                       "set Dimension = \\\n  3\n"
                                              "set Title = a \\# b\n"
-                                             "set Number of bodies = 2 # c\n");
+                                             "set Number of bodies = 2 # c\n"
+                                             "subsection Body 2\nend\n");
   dealii::ParameterHandler prm;
   parameters::declare_dimension(prm);
   prm.declare_entry("Number of bodies", "1", dealii::Patterns::Integer(1, 2));
   prm.declare_entry("Title", "", dealii::Patterns::Anything());
+  prm.enter_subsection("Body 2");
+  prm.leave_subsection();
   parameters::parse_file(prm, file);
   const auto outline = parameters::scan_file(file);
   EXPECT_EQ(outline.dimension, prm.get_integer("Dimension"));
