@@ -20,10 +20,11 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release \
 cmake --build "$build" -j2 \
   --target dpana dpana_contact_tests dpana_fe_tests
 
-# The MPI library that deal.II initialises keeps some memory until exit,
-# which is not dpana's: those leaks are suppressed by library name.
+# Siconos numerics (used by the cross-checks) and the MPI library that
+# deal.II initialises keep memory until exit, which is not dpana's: those
+# leaks are suppressed by library name.
 suppressions=$(readlink -f "$build")/lsan.supp
-printf 'leak:libopen-pal\nleak:libmpi\nleak:libhwloc\nleak:libpmix\nleak:libevent\nleak:libopen-rte\n' \
+printf 'leak:libsiconos_numerics\nleak:libopen-pal\nleak:libmpi\nleak:libhwloc\nleak:libpmix\nleak:libevent\nleak:libopen-rte\n' \
   > "$suppressions"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:exitcode=86
 export LSAN_OPTIONS=suppressions=$suppressions
