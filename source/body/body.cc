@@ -97,7 +97,14 @@ namespace dpana
                 dealii::ExcMessage("Body::create_mesh() needs the "
                                    "parameters of a Geometry subsection."));
     tria.clear();
-    geometry->create_triangulation(tria);
+    try
+      {
+        geometry->create_triangulation(tria);
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(name_ + " / " + e.what());
+      }
     names = geometry->boundary_names();
   }
 
@@ -230,14 +237,20 @@ namespace dpana
 
 
   // A concentrated force acts at the used vertex nearest to the requested
-  // point (the first of them if several are equally near).
+  // point (the first of them if several are equally near). A point farther
+  // from every vertex than the largest cell is wide lies outside the body:
+  // an error. A point that is not a vertex is moved: a warning.
   template <int dim>
   void
   Body<dim>::locate_concentrated_forces()
   {
     concentrated.clear();
     concentrated_vertex.clear();
+    warnings_.clear();
     const auto &vertices = tria.get_vertices();
+    double      h        = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      h = std::max(h, cell->diameter());
     for (const auto &cf : loads_.concentrated_forces)
       {
         unsigned int best = dealii::numbers::invalid_unsigned_int;
@@ -247,6 +260,19 @@ namespace dpana
                vertices[v].distance(cf.point) <
                  vertices[best].distance(cf.point)))
             best = v;
+        const double      distance = vertices[best].distance(cf.point);
+        std::stringstream text;
+        text << "the point (" << cf.point << ") lies " << distance
+             << " mm from the nearest vertex (" << vertices[best] << ")";
+        if (distance > h)
+          {
+            text << ", farther than the largest cell is wide (" << h
+                 << " mm): it is outside the body";
+            throw InputError(cf.parameter + ": " + text.str());
+          }
+        if (distance > 1e-6 * h)
+          warnings_.push_back(cf.parameter + ": " + text.str() +
+                              ", where the force is applied");
         concentrated.push_back({cf.point, vertices[best], cf.force});
         concentrated_vertex.push_back(best);
       }

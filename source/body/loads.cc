@@ -79,7 +79,8 @@ namespace dpana
                                           p_forces))
       concentrated_forces.push_back(
         {parameters::parse_point<dim>(item.key, p_forces),
-         parameters::parse_vector<dim>(item.value, p_forces)});
+         parameters::parse_vector<dim>(item.value, p_forces),
+         p_forces});
 
     // A zero body force is no body force: the assembly skips it.
     const auto b = parameters::parse_vector<dim>(prm.get("Body force"),

@@ -129,12 +129,18 @@ namespace dpana
           for (Eigen::Index b = 0; b < nl; ++b)
             for (Eigen::Index a = 0; a < ns; ++a)
               P(a, b) = M(s_index[a], l_index[b]);
-          // W = L^{-1} M_sl, Sigma = M_ll - W^T W, P = L^{-T} W.
-          llt_stick.matrixL().solveInPlace(P);
-          Sigma.selfadjointView<Eigen::Lower>().rankUpdate(P.transpose(), -1.0);
-          Sigma.triangularView<Eigen::StrictlyUpper>() =
-            Sigma.transpose().eval();
-          llt_stick.matrixU().solveInPlace(P);
+          // W = L^{-1} M_sl, Sigma = M_ll - W^T W, P = L^{-T} W (nothing
+          // to do without slip unknowns: Eigen's triangular solve must not
+          // see the empty P).
+          if (nl > 0)
+            {
+              llt_stick.matrixL().solveInPlace(P);
+              Sigma.selfadjointView<Eigen::Lower>().rankUpdate(P.transpose(),
+                                                               -1.0);
+              Sigma.triangularView<Eigen::StrictlyUpper>() =
+                Sigma.transpose().eval();
+              llt_stick.matrixU().solveInPlace(P);
+            }
         }
       cached_partition = partition;
       cache_valid      = true;

@@ -159,6 +159,21 @@ namespace dpana
                              "Contact / Contact direction");
           n_surface /= n_surface.norm();
         }
+      // A direction that looks away from the candidate faces as a whole is
+      // the direction's fault, not the candidate region's.
+      dealii::Tensor<1, dim> mean_normal;
+      for (const auto &F : faces)
+        mean_normal += F.area * F.normal;
+      if (opts.direction.norm() > 0 && mean_normal.norm() > 0 &&
+          mean_normal * n_surface <= 0)
+        throw InputError(
+          "Contact / Contact direction " +
+          internal::format_point(dealii::Point<dim>(opts.direction)) +
+          " points away from the boundary '" + opts.boundary + "' of " +
+          opts.body + " (its mean outward normal is " +
+          internal::format_point(
+            dealii::Point<dim>(mean_normal / mean_normal.norm())) +
+          "): it must point from " + opts.body + " towards the obstacle");
       for (const auto &F : faces)
         if (F.normal * n_surface <= 1e-3)
           throw InputError(

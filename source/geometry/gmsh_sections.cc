@@ -426,6 +426,61 @@ namespace dpana
         lines.expect("$EndElements");
         return n_cells;
       }
+
+
+
+      // $Entities of format 4.1, which GridIn reads number by number: the
+      // counts of points, curves, surfaces and volumes, then one line per
+      // entity, "tag x y z n_physical physical..." for a point and "tag
+      // box(6) n_physical physical... n_bounding bounding..." for the
+      // others, every word a number.
+      void
+      read_entities(Lines &lines)
+      {
+        const std::string section = "$Entities";
+        lines.next_in(section);
+        const auto counts = lines.integers(
+          4, "'points curves surfaces volumes' (format 4.1 $Entities)");
+        for (unsigned int kind = 0; kind < 4; ++kind)
+          for (long long i = 0; i < counts[kind]; ++i)
+            {
+              lines.next_in(section);
+              const auto        w             = lines.words();
+              const std::size_t n_coordinates = kind == 0 ? 3 : 6;
+              bool              ok            = w.size() > n_coordinates + 1;
+              for (const std::string &word : w)
+                {
+                  char *end;
+                  std::strtod(word.c_str(), &end);
+                  ok = ok && *end == '\0';
+                }
+              long long n_physical = -1, n_bounding = 0;
+              ok = ok && to_integer(w[n_coordinates + 1], n_physical) &&
+                   n_physical >= 0;
+              const std::size_t next = n_coordinates + 2 + n_physical;
+              if (ok && kind > 0)
+                ok = w.size() > next && to_integer(w[next], n_bounding) &&
+                     n_bounding >= 0;
+              if (!ok || w.size() != next + (kind > 0 ? 1 + n_bounding : 0))
+                lines.fail("expected an entity of dimension " +
+                           std::to_string(kind) + ", got " +
+                           parameters::quote(lines.line()));
+            }
+        lines.next_in(section);
+        lines.expect("$EndEntities");
+      }
+
+
+
+      // A section this reader does not check must at least be closed.
+      void
+      skip_section(Lines &lines, const std::string &section)
+      {
+        const std::string end = "$End" + section.substr(1);
+        do
+          lines.next_in(section);
+        while (dealii::Utilities::trim(lines.line()) != end);
+      }
     } // namespace
 
 
@@ -435,8 +490,9 @@ namespace dpana
                        const unsigned int dim,
                        const std::string &error)
     {
-      Lines       lines(in, error);
-      bool        format_seen = false, v41 = false, nodes_seen = false;
+      Lines lines(in, error);
+      bool  format_seen = false, v41 = false, nodes_seen = false,
+           elements_seen = false;
       Nodes       nodes;
       GmshOutline outline;
       while (lines.next())
@@ -456,11 +512,19 @@ namespace dpana
               if (!nodes_seen)
                 lines.fail("$Elements comes before $Nodes");
               outline.n_cells = read_elements(lines, v41, nodes, dim);
+              elements_seen   = true;
             }
+          else if (line == "$Entities" && v41)
+            read_entities(lines);
+          else if (line.rfind("$", 0) == 0 && line.rfind("$End", 0) != 0)
+            skip_section(lines, line);
         }
       if (!format_seen)
         throw InputError(error + "' has no $MeshFormat section, it is not a "
                                  "gmsh file");
+      if (!nodes_seen || !elements_seen)
+        throw InputError(error + "' has no " +
+                         (nodes_seen ? "$Elements" : "$Nodes") + " section");
       return outline;
     }
   } // namespace geometry

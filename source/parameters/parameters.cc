@@ -9,6 +9,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -160,29 +161,73 @@ namespace dpana
 
 
 
-    // The top level of the file is read statement by statement; a
-    // subsection counter tells the top-level statements from the others.
-    // The values are checked here because they decide what is declared: a
+    namespace
+    {
+      // The run a file describes must match its subsections: a second body
+      // needs its subsection, and a one-body run has neither a Body 2 nor a
+      // contact boundary of Body 2 (its obstacle is the rigid plane).
+      void
+      check_bodies(const std::string &filename,
+                   const FileOutline &outline,
+                   const unsigned int n_bodies_line,
+                   const unsigned int body_2_line,
+                   const unsigned int boundary_2_line)
+      {
+        if (outline.n_bodies == 2 && body_2_line == 0)
+          throw InputError(where(filename, n_bodies_line) +
+                           "Number of bodies = 2, but the file has no "
+                           "subsection 'Body 2'");
+        if (outline.n_bodies == 1 && body_2_line != 0)
+          throw InputError(where(filename, body_2_line) +
+                           "subsection 'Body 2' in a run with one body (set "
+                           "Number of bodies = 2)");
+        if (outline.n_bodies == 1 && boundary_2_line != 0)
+          throw InputError(where(filename, boundary_2_line) +
+                           "Contact / Boundary 2 is set in a run with one "
+                           "body, whose obstacle is the rigid plane (set "
+                           "Number of bodies = 2 for a second body)");
+      }
+    } // namespace
+
+
+
+    // The top level of the file is read statement by statement; the path of
+    // subsections tells the top-level statements from the others. The
+    // values are checked here because they decide what is declared: a
     // wrong dimension would otherwise surface as a confusing list of
     // undeclared entries.
     FileOutline
     scan_file(const std::string &filename)
     {
+      if (std::filesystem::is_directory(filename))
+        throw InputError("parameter file " + quote(filename) +
+                         " is a directory");
       std::ifstream in(filename);
       if (!in)
-        throw InputError("cannot read parameter file '" + filename + "'");
-      FileOutline  outline;
-      unsigned int depth = 0;
-      for (const Statement &s : read_statements(in))
+        throw InputError("cannot read parameter file " + quote(filename));
+      const std::vector<Statement> statements = read_statements(in);
+      if (statements.empty())
+        throw InputError("parameter file " + quote(filename) +
+                         " sets nothing (it is empty or all comments)");
+      FileOutline              outline;
+      std::vector<std::string> path;
+      unsigned int n_bodies_line = 0, body_2_line = 0, boundary_2_line = 0;
+      for (const Statement &s : statements)
         if (is_keyword(s, "subsection"))
           {
-            if (depth == 0 && collapse_whitespace(s.rest) == "Contact")
+            const std::string name = collapse_whitespace(s.rest);
+            if (path.empty() && name == "Contact")
               outline.has_contact = true;
-            ++depth;
+            if (path.empty() && name == "Body 2")
+              body_2_line = s.line;
+            path.push_back(name);
           }
-        else if (is_keyword(s, "end") && depth > 0)
-          --depth;
-        else if (is_keyword(s, "set") && depth == 0)
+        else if (is_keyword(s, "end") && !path.empty())
+          path.pop_back();
+        else if (is_keyword(s, "set") && path.size() == 1 &&
+                 path[0] == "Contact" && entry_of(s).first == "Boundary 2")
+          boundary_2_line = s.line;
+        else if (is_keyword(s, "set") && path.empty())
           {
             const auto [name, value] = entry_of(s);
             if (name == "Dimension")
@@ -200,8 +245,11 @@ namespace dpana
                                    "Number of bodies: must be 1 or 2, got " +
                                    quote(value));
                 outline.n_bodies = value == "1" ? 1 : 2;
+                n_bodies_line    = s.line;
               }
           }
+      check_bodies(
+        filename, outline, n_bodies_line, body_2_line, boundary_2_line);
       return outline;
     }
 
@@ -312,12 +360,23 @@ namespace dpana
         message = d->get_exc_name();
       const std::string prefix = "Line <";
       const auto        file   = message.find("> of file <");
-      const auto        colon  = message.find(">:");
+      // deal.II 9.4 leaves out the '>' after the file name in its message
+      // of an unknown subsection ("... of file <a.prm: There is no such
+      // subsection to be entered: Contakt").
+      auto        colon = message.find(">:", file);
+      std::size_t skip  = 2;
+      if (file != std::string::npos && colon == std::string::npos)
+        colon = message.find(": ", file), skip = 1;
       if (message.rfind(prefix, 0) == 0 && file != std::string::npos &&
-          colon != std::string::npos && file < colon)
+          colon != std::string::npos)
         message = message.substr(file + 11, colon - file - 11) + ", line " +
                   message.substr(prefix.size(), file - prefix.size()) + ":" +
-                  message.substr(colon + 2);
+                  message.substr(colon + skip);
+      const std::string no_subsection = "subsection to be entered: ";
+      const auto        unknown       = message.find(no_subsection);
+      if (unknown != std::string::npos)
+        message = message.substr(0, unknown + no_subsection.size()) +
+                  quote(message.substr(unknown + no_subsection.size()));
       std::string out;
       for (std::size_t i = 0; i < message.size(); ++i)
         {

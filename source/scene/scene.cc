@@ -8,6 +8,7 @@
 #include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
 #include <dpana/parameters/list_syntax.h>
+#include <dpana/scene/input_checks.h>
 #include <dpana/scene/scene.h>
 
 #include <deal.II/base/utilities.h>
@@ -92,6 +93,7 @@ namespace dpana
           solver.parse_parameters(prm);
           references.parse_parameters(prm);
           prm.leave_subsection();
+          check_contact_boundaries_free(bodies, surface_parameters.boundary);
         }
       prm.enter_subsection("Output");
       output_parameters.parse_parameters(prm);
@@ -152,6 +154,8 @@ namespace dpana
                 std::cout << " " << m.description;
             }
           std::cout << std::endl;
+          for (const auto &w : body->warnings())
+            std::cout << "        warning: " << w << std::endl;
           for (const auto &cf : body->applied_concentrated_forces())
             std::cout << "        " << body->name() << ": concentrated force ("
                       << cf.force << ") requested at (" << cf.requested_point
@@ -249,6 +253,7 @@ namespace dpana
       problem_ = condensation::assemble_contact_problem(
         parts, *surfaces[0], law.friction, law.cone, law.polygon_sides);
       summary_.asymmetry = condensation::largest_asymmetry(parts);
+      check_held_by_contact(bodies, problem_);
       if (quiet)
         return;
       std::cout << "        Condensation: " << problem_.n_elements()
@@ -427,6 +432,9 @@ namespace dpana
       summary["bodies"]      = nlohmann::json::array();
       for (const auto &body : bodies)
         summary["bodies"].push_back(output::to_json(*body));
+      for (const auto &body : bodies)
+        for (const auto &w : body->warnings())
+          summary["warnings"].push_back(w);
       if (with_contact)
         {
           summary["contact"] = output::to_json(summary_, dim);

@@ -402,6 +402,17 @@ namespace dpana
     }
 
     /**
+     * The warnings of the setup, one line each (e.g. a concentrated force
+     * moved to a vertex far from its point); the log prints them and
+     * summary.json lists them.
+     */
+    const std::vector<std::string> &
+    warnings() const
+    {
+      return warnings_;
+    }
+
+    /**
      * Largest nodal displacement magnitude (mm).
      */
     double
@@ -440,6 +451,7 @@ namespace dpana
     std::vector<AppliedConcentratedForce> concentrated;
     // The mesh vertex of each of the concentrated forces.
     std::vector<unsigned int> concentrated_vertex;
+    std::vector<std::string>  warnings_;
 
     std::vector<dealii::SymmetricTensor<2, dim>>  stress;
     std::vector<double>                           stress_zz;

@@ -51,6 +51,7 @@ namespace dpana
     {
       dealii::Point<dim>     point;
       dealii::Tensor<1, dim> force;
+      std::string            parameter;
     };
 
     std::vector<Pressure>                        pressure;

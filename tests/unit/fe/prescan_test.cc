@@ -38,7 +38,7 @@ namespace
 TEST(PreScan, Defaults)
 {
   const auto outline =
-    parameters::scan_file(write_file("empty.prm", "# nothing\n"));
+    parameters::scan_file(write_file("empty.prm", "subsection Output\nend\n"));
   EXPECT_EQ(outline.dimension, 2u);
   EXPECT_EQ(outline.n_bodies, 1u);
   EXPECT_FALSE(outline.has_contact);
@@ -56,6 +56,8 @@ TEST(PreScan, TopLevelOnly)
                            "  subsection Contact\n"
                            "    set Number of bodies = 1\n"
                            "  end\n"
+                           "end\n"
+                           "subsection Body 2\n"
                            "end\n";
   const auto outline = parameters::scan_file(write_file("nested.prm", text));
   EXPECT_EQ(outline.dimension, 3u);
@@ -75,11 +77,14 @@ TEST(PreScan, SameReadingAsTheParameterHandler)
   const std::string        file = write_file("continued.prm",
                                       "set Dimension = \\\n  3\n"
                                              "set Title = a \\# b\n"
-                                             "set Number of bodies = 2 # c\n");
+                                             "set Number of bodies = 2 # c\n"
+                                             "subsection Body 2\nend\n");
   dealii::ParameterHandler prm;
   parameters::declare_dimension(prm);
   prm.declare_entry("Number of bodies", "1", dealii::Patterns::Integer(1, 2));
   prm.declare_entry("Title", "", dealii::Patterns::Anything());
+  prm.enter_subsection("Body 2");
+  prm.leave_subsection();
   parameters::parse_file(prm, file);
   const auto outline = parameters::scan_file(file);
   EXPECT_EQ(outline.dimension, prm.get_integer("Dimension"));
@@ -109,6 +114,24 @@ TEST(PreScan, Errors)
                        "set Number of bodies = \\\n 3\n"))
       .find("bodies.prm, line 2: Number of bodies: must be 1 or 2, got '3'"),
     std::string::npos);
+  // A file that sets nothing, a directory, and the number of bodies
+  // against the subsections and the contact boundary of Body 2.
+  EXPECT_NE(message(write_file("comments.prm", "# nothing\n"))
+              .find("comments.prm' sets nothing"),
+            std::string::npos);
+  EXPECT_NE(message(std::filesystem::temp_directory_path().string())
+              .find("is a directory"),
+            std::string::npos);
+  EXPECT_NE(message(write_file("two.prm", "set Number of bodies = 2\n"))
+              .find("two.prm, line 1: Number of bodies = 2, but the file has "
+                    "no subsection 'Body 2'"),
+            std::string::npos);
+  EXPECT_NE(message(write_file("one.prm",
+                               "subsection Contact\n  set Boundary 2 = top\n"
+                               "end\n"))
+              .find("one.prm, line 2: Contact / Boundary 2 is set in a run "
+                    "with one body"),
+            std::string::npos);
   EXPECT_NE(message("/nonexistent/dpana.prm")
               .find("cannot read parameter file '/nonexistent/dpana.prm'"),
             std::string::npos);

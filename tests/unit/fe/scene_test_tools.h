@@ -146,7 +146,10 @@ namespace dpana
 
     /**
      * Body 2 of hertz_prm(): a 40 x 40 foundation under the plane y = 0,
-     * held only in x (free to move along the axis), pressed from below.
+     * held only in x (free to move along the axis), pressed from below by
+     * 2500 MPa over its 40 mm base, which balances the 100 kN/mm that press
+     * the cylinder of hertz_prm() down (otherwise the contact could not hold
+     * the pair, scene::check_held_by_contact()).
      */
     inline std::string
     floating_foundation()
@@ -164,7 +167,7 @@ namespace dpana
              "    set Fixed = bottom: x\n"
              "  end\n"
              "  subsection Loads\n"
-             "    set Pressure = bottom: 100\n"
+             "    set Pressure = bottom: 2500\n"
              "  end\n";
     }
 

@@ -1,0 +1,128 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#include <dpana/base/exceptions.h>
+#include <dpana/contact/feasibility.h>
+#include <dpana/parameters/parameters.h>
+#include <dpana/scene/input_checks.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dpana
+{
+  namespace scene
+  {
+    namespace
+    {
+      // The motions along which a body's unbalanced load acts: its
+      // components of at least 0.3 times the largest, each with the sign
+      // of the load ("+y", "-rotation").
+      std::string
+      directions(const std::vector<RigidMode> &modes,
+                 const Eigen::VectorXd        &unbalanced)
+      {
+        const double largest = unbalanced.lpNorm<Eigen::Infinity>();
+        std::string  text;
+        for (unsigned int k = 0; k < modes.size(); ++k)
+          if (std::abs(unbalanced(k)) >= 0.3 * largest)
+            text += (text.empty() ? "" : ", ") +
+                    std::string(unbalanced(k) > 0 ? "+" : "-") +
+                    modes[k].description;
+        return text;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    check_held_by_contact(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                          const contact::ContactProblem &problem)
+    {
+      const double tolerance = 1e-8;
+      if (problem.n_equalities() == 0)
+        return;
+      double scale = 0;
+      for (const auto &body : bodies)
+        scale = std::max(scale, body->system_rhs().l1_norm());
+      if (!(scale > 0))
+        return;
+      const auto f = contact::check_feasibility(
+        problem,
+        Eigen::VectorXd::Constant(problem.n_equalities(), scale),
+        tolerance);
+      if (f.feasible)
+        return;
+
+      std::vector<std::pair<std::string, std::string>> unheld;
+      unsigned int                                     row = 0;
+      for (const auto &body : bodies)
+        {
+          const auto           &modes = body->free_rigid_modes();
+          const Eigen::VectorXd u     = f.unbalanced.segment(row, modes.size());
+          row += modes.size();
+          if (!modes.empty() && u.lpNorm<Eigen::Infinity>() > tolerance)
+            unheld.emplace_back(body->name(), directions(modes, u));
+        }
+      std::string names, where;
+      for (const auto &[name, along] : unheld)
+        {
+          names += (names.empty() ? "" : " and ") + name;
+          where += (where.empty() ? "" : ", ") + along +
+                   (unheld.size() > 1 ? " (" + name + ")" : "");
+        }
+      std::ostringstream details;
+      details << "Contact / Friction coefficient = "
+              << (problem.n_elements() > 0 ? problem.mu(0) : 0.)
+              << "; unbalanced: " << f.residual << " of the largest load sum";
+      throw InputError(names + " cannot be held by the contact: the part of " +
+                       (unheld.size() > 1 ? "the" : "its") + " loads along " +
+                       where +
+                       " cannot be balanced by compressive tractions within "
+                       "the friction cones (" +
+                       details.str() + "); hold " +
+                       (unheld.size() > 1 ? "the bodies" : "the body") +
+                       " by Dirichlet or symmetry conditions or change the "
+                       "loads");
+    }
+
+
+
+    template <int dim>
+    void
+    check_contact_boundaries_free(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const std::array<std::string, 2>              &contact_boundaries)
+    {
+      for (unsigned int b = 0; b < bodies.size() && b < 2; ++b)
+        for (const auto &[boundary, parameter] :
+             bodies[b]->boundary_conditions().used_boundaries())
+          if (boundary == contact_boundaries[b])
+            throw InputError(parameter + ": " + parameters::quote(boundary) +
+                             " is the contact boundary of " +
+                             bodies[b]->name() + " (Contact / Boundary " +
+                             std::to_string(b + 1) +
+                             "); a kinematic condition there holds what the "
+                             "contact is to carry");
+    }
+
+
+
+    template void
+    check_held_by_contact(const std::vector<std::unique_ptr<Body<2>>> &,
+                          const contact::ContactProblem &);
+    template void
+    check_held_by_contact(const std::vector<std::unique_ptr<Body<3>>> &,
+                          const contact::ContactProblem &);
+    template void
+    check_contact_boundaries_free(const std::vector<std::unique_ptr<Body<2>>> &,
+                                  const std::array<std::string, 2> &);
+    template void
+    check_contact_boundaries_free(const std::vector<std::unique_ptr<Body<3>>> &,
+                                  const std::array<std::string, 2> &);
+  } // namespace scene
+} // namespace dpana
