@@ -17,6 +17,9 @@ namespace dpana
     std::string
     MemoryEstimate::describe() const
     {
+      if (!made)
+        return "not made (the factorisation back end has no symbolic "
+               "analysis to estimate from)";
       const double       GB = 1e9;
       std::ostringstream s;
       s << n_dofs << " dofs, n_Gamma = " << n_gamma << ", n_c = " << n_c
@@ -34,6 +37,7 @@ namespace dpana
                     const unsigned int                              n_c)
     {
       MemoryEstimate m;
+      m.made          = true;
       m.n_dofs        = n_dofs;
       m.n_gamma       = analysis.n_last;
       m.n_c           = n_c;

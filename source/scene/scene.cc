@@ -445,6 +445,11 @@ namespace dpana
           for (const auto &c : condensers)
             {
               const auto &m = c->memory_estimate();
+              if (!m.made)
+                {
+                  summary["memory_estimate_mb"].push_back(nullptr);
+                  continue;
+                }
               summary["memory_estimate_mb"].push_back(
                 {{"n_dofs", m.n_dofs},
                  {"n_gamma", m.n_gamma},

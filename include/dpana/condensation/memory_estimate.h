@@ -35,6 +35,9 @@ namespace dpana
      */
     struct MemoryEstimate
     {
+      /// False until estimate_memory() made it: a factorisation back end
+      /// without a symbolic analysis of its own (MUMPS) gives none.
+      bool         made    = false;
       unsigned int n_dofs  = 0;
       unsigned int n_gamma = 0;
       unsigned int n_c     = 0;
