@@ -7,8 +7,8 @@ Runs gmsh (Debian package `gmsh`) on scripts/meshes/sphere.geo, next to this
 script, and prints the size of the mesh it wrote: nodes, tetrahedra, the
 displacement unknowns (3 per node), the triangles of the contact cap and the
 contact unknowns they give with 8 triangles per contact element (3 per
-element; dpana's grouping of an unstructured surface leaves some smaller
-elements, about 10 % more). `--level L` sets SizeFactor = 2^(-L/2), so that each level has
+element; dpana merges the small groups its grouping of an unstructured
+surface leaves into their neighbours, so that there are somewhat fewer). `--level L` sets SizeFactor = 2^(-L/2), so that each level has
 about 2^(3/2) = 2.8 times the unknowns of the one before (level 0: the
 sizes of sphere.geo); `--set` passes any parameter of sphere.geo (R, Side,
 CapRadius, PoleRadius, SizeContact, SizeFar, Growth, SizeFactor,
@@ -99,8 +99,8 @@ def main():
     n_nodes, n_tets, triangles = mesh_size(args.output)
     contact = triangles.get(3, 0)
     print("%s: %d nodes (%d displacement unknowns), %d tetrahedra, %d "
-          "triangles on the contact cap (at least %d contact unknowns; the "
-          "small groups left over add about 10 %%)"
+          "triangles on the contact cap (at most about %d contact unknowns: "
+          "dpana merges small leftover groups into their neighbours)"
           % (args.output, n_nodes, 3 * n_nodes, n_tets, contact,
              3 * (contact // 8)))
 

@@ -3,8 +3,8 @@
 // ---------------------------------------------------------------------------
 //
 // The grouping of the candidate faces into contact elements: runs of
-// adjacent edges in 2D; cells of a tangential lattice or greedy
-// agglomeration in 3D.
+// adjacent edges in 2D; cells of a tangential lattice, or greedy
+// agglomeration followed by the merging of its leftovers, in 3D.
 
 #include <dpana/contact_surface/contact_surface.h>
 
@@ -214,6 +214,76 @@ namespace dpana
           elements.emplace_back();
           elements.back().faces = group;
         }
+      merge_leftovers(size);
+    }
+
+
+
+    // The greedy agglomeration leaves small groups where a group cannot grow
+    // any more (its free neighbours taken by earlier groups). Each group of
+    // fewer than size / 2 faces, the smallest first, joins the neighbouring
+    // group (sharing an edge) of the smallest area, so that the elements
+    // differ in area by a factor of about 2 at most, as on a lattice.
+    template <int dim>
+    void
+    ContactSurface<dim>::merge_leftovers(const unsigned int size)
+    {
+      std::map<std::vector<unsigned int>, std::vector<unsigned int>> edge_faces;
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        for (unsigned int i = 0; i < faces[f].vertices.size(); ++i)
+          {
+            std::vector<unsigned int> edge{
+              faces[f].vertices[i],
+              faces[f].vertices[(i + 1) % faces[f].vertices.size()]};
+            std::sort(edge.begin(), edge.end());
+            edge_faces[edge].push_back(f);
+          }
+      std::vector<unsigned int> owner(faces.size());
+      std::vector<double>       area(elements.size(), 0.);
+      for (unsigned int j = 0; j < elements.size(); ++j)
+        for (const unsigned int f : elements[j].faces)
+          {
+            owner[f] = j;
+            area[j] += faces[f].area;
+          }
+
+      std::vector<unsigned int> small;
+      for (unsigned int j = 0; j < elements.size(); ++j)
+        if (2 * elements[j].faces.size() < size)
+          small.push_back(j);
+      std::stable_sort(small.begin(),
+                       small.end(),
+                       [&](const unsigned int a, const unsigned int b) {
+                         return elements[a].faces.size() <
+                                elements[b].faces.size();
+                       });
+      for (const unsigned int j : small)
+        {
+          unsigned int best = dealii::numbers::invalid_unsigned_int;
+          for (const auto &[edge, fs] : edge_faces)
+            if (fs.size() == 2 && (owner[fs[0]] == j) != (owner[fs[1]] == j))
+              {
+                const unsigned int k = owner[fs[owner[fs[0]] == j ? 1 : 0]];
+                if (best == dealii::numbers::invalid_unsigned_int ||
+                    area[k] < area[best] || (area[k] == area[best] && k < best))
+                  best = k;
+              }
+          if (best == dealii::numbers::invalid_unsigned_int)
+            continue;
+          for (const unsigned int f : elements[j].faces)
+            owner[f] = best;
+          elements[best].faces.insert(elements[best].faces.end(),
+                                      elements[j].faces.begin(),
+                                      elements[j].faces.end());
+          area[best] += area[j];
+          elements[j].faces.clear();
+        }
+      elements.erase(std::remove_if(elements.begin(),
+                                    elements.end(),
+                                    [](const ContactElement<dim> &e) {
+                                      return e.faces.empty();
+                                    }),
+                     elements.end());
     }
 
 

@@ -21,15 +21,20 @@ namespace dpana
 
 
 
-      // The pressure estimates finer than an element (2D), see
-      // scene/pressure_estimators.h.
+      // The pressure estimates finer than an element (2D) and the measured
+      // approach (3D Hertz scenes), see scene/pressure_estimators.h.
       nlohmann::json
       estimates_to_json(const scene::PressureEstimates &est)
       {
-        nlohmann::json j = {{"mirrored_half_model", est.mirrored},
-                            {"pressure_resultant", est.resultant},
-                            {"pressure_centroid", est.centroid},
-                            {"moment_half_width", est.moment_half_width}};
+        nlohmann::json j = nlohmann::json::object();
+        if (est.approach_measured)
+          j["approach"] = est.approach;
+        if (!est.available)
+          return j;
+        j["mirrored_half_model"] = est.mirrored;
+        j["pressure_resultant"]  = est.resultant;
+        j["pressure_centroid"]   = est.centroid;
+        j["moment_half_width"]   = est.moment_half_width;
         if (est.fit_available)
           {
             j["fit_half_width"]   = est.fit_half_width;
@@ -99,7 +104,7 @@ namespace dpana
           {"candidate_edge_warning", summary.candidate_edge_warning},
           {"rigid_displacements",
            std::vector<double>(res.alpha.begin(), res.alpha.end())}};
-      if (summary.estimates.available)
+      if (summary.estimates.available || summary.estimates.approach_measured)
         j["estimates"] = estimates_to_json(summary.estimates);
       j["zones"] = nlohmann::json::array();
       for (const auto &z : summary.zones)

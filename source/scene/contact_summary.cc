@@ -199,6 +199,10 @@ namespace dpana
         }
       if (summary.estimates.available)
         print_estimates(summary.estimates, out);
+      if (summary.estimates.approach_measured)
+        out << "Approach of the bodies (far points relative to the contact "
+               "point, along the contact normal): "
+            << summary.estimates.approach << " mm" << std::endl;
       if (summary.candidate_edge_warning)
         out << "WARNING: the contact zone reaches the edge of the candidate "
                "surface; enlarge Contact / Candidate half width"

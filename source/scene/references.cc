@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/io/csv.h>
+#include <dpana/scene/approach.h>
 #include <dpana/scene/references.h>
 
 #include <deal.II/base/patterns.h>
@@ -80,6 +81,32 @@ namespace dpana
                                   relative(est.fit_max_pressure, N_H));
           }
         c.text += out.str();
+      }
+      // Adds the measured approach (if any) to the comparison @p c: against
+      // Hertz's delta and against delta less the half-space displacement at
+      // the spheres' centres, @p centre_approach.
+      void
+      add_approach(Comparison              &c,
+                   const PressureEstimates &est,
+                   const double             delta,
+                   const double             centre_approach)
+      {
+        if (!est.approach_measured)
+          return;
+        const double       d = est.approach;
+        std::ostringstream t;
+        t << std::setprecision(6) << "; approach of the centres " << d
+          << " mm against Hertz's delta " << std::showpos << relative(d, delta)
+          << ", against delta less the half-space "
+          << "displacement at the centres (" << std::noshowpos
+          << centre_approach << " mm) " << std::showpos
+          << relative(d, centre_approach);
+        c.text += t.str();
+        c.values = {{"approach_measured", d},
+                    {"approach_at_centres", centre_approach},
+                    {"approach_error", relative(d, delta)},
+                    {"approach_at_centres_error",
+                     relative(d, centre_approach)}};
       }
     } // namespace
 
@@ -271,6 +298,27 @@ namespace dpana
 
 
 
+    template <int dim>
+    void
+    References<dim>::measure_approach(
+      const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+      const contact_surface::ContactSurface<dim>    &surface,
+      ContactSummary                                &summary) const
+    {
+      summary.estimates.approach_measured = false;
+      if (type != "hertz sphere" || (bodies.size() > 1 && !(radius_2 > 0)))
+        return;
+      const dealii::Point<dim>     x0 = surface.options().region_centre;
+      const dealii::Tensor<1, dim> n  = surface.surface_normal();
+      double delta = body_approach(*bodies[0], x0, x0 - radius_1 * n, n, 1.);
+      if (bodies.size() > 1)
+        delta += body_approach(*bodies[1], x0, x0 + radius_2 * n, n, -1.);
+      summary.estimates.approach_measured = true;
+      summary.estimates.approach          = delta;
+    }
+
+
+
     // Every element must carry N = N_ref and T = 0.
     template <int dim>
     Comparison
@@ -438,6 +486,15 @@ namespace dpana
       const double a_m = moment_contact_radius(pieces);
       const double P   = summary.normal_resultant / model_fraction;
       const double N   = summary.max_pressure;
+      // Hertz's approach seen from the spheres' centres: less the
+      // half-space displacement at their depths.
+      double centre_approach = H.approach;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        centre_approach -=
+          boussinesq_axial_displacement(hertz_load,
+                                        bodies[b]->material().youngs_modulus(),
+                                        bodies[b]->material().poissons_ratio(),
+                                        b == 0 ? radius_1 : radius_2);
 
       std::ostringstream out;
       out << std::setprecision(6)
@@ -450,21 +507,22 @@ namespace dpana
           << relative(a_edge, H.radius) << ", a_m " << relative(a_m, H.radius)
           << ", N_max " << relative(N, H.max_pressure) << ", P "
           << relative(P, hertz_load);
-      return {"hertz sphere",
-              out.str(),
-              {{"a", H.radius},
-               {"N_max", H.max_pressure},
-               {"approach", H.approach},
-               {"load", hertz_load},
-               {"a_edge", a_edge},
-               {"a_edge_element", a_element},
-               {"a_moment", a_m},
-               {"resultant", P},
-               {"a_error", relative(a_edge, H.radius)},
-               {"a_moment_error", relative(a_m, H.radius)},
-               {"N_max_error", relative(N, H.max_pressure)},
-               {"load_error", relative(P, hertz_load)}},
-              ""};
+      Comparison c{"hertz sphere", out.str(), {}, ""};
+      add_approach(c, summary.estimates, H.approach, centre_approach);
+      c.values.insert(c.values.begin(),
+                      {{"a", H.radius},
+                       {"N_max", H.max_pressure},
+                       {"approach", H.approach},
+                       {"load", hertz_load},
+                       {"a_edge", a_edge},
+                       {"a_edge_element", a_element},
+                       {"a_moment", a_m},
+                       {"resultant", P},
+                       {"a_error", relative(a_edge, H.radius)},
+                       {"a_moment_error", relative(a_m, H.radius)},
+                       {"N_max_error", relative(N, H.max_pressure)},
+                       {"load_error", relative(P, hertz_load)}});
+      return c;
     }
 
 

@@ -343,6 +343,7 @@ namespace dpana
                 problem_,
                 surface_parameters.region_centre,
                 summary_);
+      references.measure_approach(bodies, *surfaces[0], summary_);
       summary_.comparisons = references.compare(bodies, *surfaces[0], summary_);
     }
 

@@ -127,7 +127,12 @@ namespace dpana
      * 2 q^2 = faces_per_element; otherwise adjacent faces are agglomerated
      * greedily, each group grown from the first free face (in the order of
      * the tangential coordinates) by the adjacent free face nearest to its
-     * centroid until it holds faces_per_element faces.
+     * centroid until it holds faces_per_element faces. A group that stops
+     * with fewer than faces_per_element / 2 faces (its free neighbours taken
+     * by earlier groups) then joins the neighbouring group of the smallest
+     * area, so that no contact element is much smaller than the others: a
+     * leftover of one or two triangles would carry a mean traction over a
+     * much smaller area than its neighbours and stand out of the profile.
      *
      * <h3>Frames and gaps</h3>
      *
@@ -290,6 +295,8 @@ namespace dpana
       group_on_lattice(const unsigned int q);
       void
       group_greedy(const unsigned int size);
+      void
+      merge_leftovers(const unsigned int size);
       void
       finish_elements();
       void

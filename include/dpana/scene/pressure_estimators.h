@@ -30,7 +30,8 @@ namespace dpana
      */
     struct PressureEstimates
     {
-      // False in 3D, and in 2D when no element is pressed.
+      // False in 3D, and in 2D when no element is pressed (the fields down
+      // to fit_centre).
       bool available = false;
       // The surface is a half model, mirrored about s0.
       bool mirrored = false;
@@ -45,6 +46,11 @@ namespace dpana
       double fit_half_width   = 0;
       double fit_max_pressure = 0;
       double fit_centre       = 0;
+      // 3D Hertz scenes: the approach delta of the bodies measured from
+      // their displacements (References::measure_approach(), mm), and
+      // whether it was measured.
+      bool   approach_measured = false;
+      double approach          = 0;
     };
 
     /**

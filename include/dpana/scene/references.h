@@ -121,7 +121,12 @@ namespace dpana
      *   radius is measured as the outer edge, in r, of the elements in
      *   contact (known to one element) and by moment_contact_radius(); its
      *   resultant of -N divided by `Model fraction` (1/4 for a quarter
-     *   model) is compared with P;
+     *   model) is compared with P; the approach measured by
+     *   measure_approach() is compared with delta = a^2 / R and with
+     *   delta - sum_i u_B(R_i), where u_B(R_i) is the displacement at the
+     *   depth R_i of the sphere's centre under the Hertz load in Hertz's own
+     *   half-space model (boussinesq_axial_displacement()): the centre is not
+     *   a distant point of a half-space;
      * - a comparison file: a contact.csv of another run (columns s, N, T),
      *   e.g. the plane solution a 3D run should reproduce on its symmetry
      *   plane, interpolated linearly in s.
@@ -144,6 +149,22 @@ namespace dpana
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * For Type = hertz sphere, measures the approach delta of the bodies
+       * (body_approach() of scene/approach.h) into @p summary.estimates:
+       * the centre of each sphere, at the distance R_i from the contact
+       * point x0 (`Candidate centre`) along the contact normal, relative to
+       * x0 on its surface, summed over the bodies; a rigid plane or seat
+       * adds nothing. The bodies must hold their displacements. A second
+       * body that is no sphere (Radius 2 <= 0) has no centre: then nothing
+       * is measured. The plane Hertz solution has no approach (that of
+       * an infinite body in plane strain is unbounded), so 2D measures none.
+       */
+      void
+      measure_approach(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                       const contact_surface::ContactSurface<dim>    &surface,
+                       ContactSummary &summary) const;
 
       /**
        * The comparisons of a run: @p bodies give the elastic constants of

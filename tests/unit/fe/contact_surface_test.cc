@@ -107,8 +107,10 @@ TEST(ContactSurface, StructuredPatchesOfEightTriangles)
 
 
 // A group size that is no lattice patch (6) falls back to the greedy
-// agglomeration: every face in exactly one element, no element larger than
-// 6 faces, every element connected (its faces linked by shared edges).
+// agglomeration: every face in exactly one element, every element of 3 to
+// 12 faces (groups that stop below 6 / 2 = 3 faces join a neighbour, which
+// may take in more than one of them, here one of 6 + 2 + 1), every element
+// connected (its faces linked by shared edges).
 TEST(ContactSurface, GreedyAgglomerationCoversTheSurface)
 {
   auto s = make_scene<3>(box_prm("6"));
@@ -120,7 +122,8 @@ TEST(ContactSurface, GreedyAgglomerationCoversTheSurface)
   double                      area = 0;
   for (const auto &e : surface.get_elements())
     {
-      EXPECT_LE(e.faces.size(), 6u);
+      EXPECT_GE(e.faces.size(), 3u);
+      EXPECT_LE(e.faces.size(), 12u);
       used.insert(e.faces.begin(), e.faces.end());
       area += e.area;
       // Connectivity by a flood fill over shared edges.
@@ -289,6 +292,26 @@ TEST(ContactSurface, ProjectedGapOfArcOnPlane)
   two->assemble();
   two->build_contact_surface();
   expect_same_gaps(*one, *two, 12);
+
+  // The positions s along the surface are the projections x of the points
+  // on the plane normal to the contact direction (the x axis), not arc
+  // lengths R asin(x / R), which exceed them by 1 % at x = 0.25 R: the outer
+  // edge of every element is the largest |x| of its vertices, and that of
+  // the surface the largest |x| of all.
+  const auto &surface = one->surface(0);
+  double      x_max = 0, s_max = 0;
+  for (const auto &e : surface.get_elements())
+    {
+      double x_e = 0;
+      for (const unsigned int f : e.faces)
+        for (const auto &x : surface.get_faces()[f].points)
+          x_e = std::max(x_e, std::abs(x[0]));
+      EXPECT_NEAR(std::max(std::abs(e.s_min), std::abs(e.s_max)), x_e, 1e-12);
+      x_max = std::max(x_max, x_e);
+      s_max = std::max({s_max, std::abs(e.s_min), std::abs(e.s_max)});
+    }
+  EXPECT_NEAR(s_max, x_max, 1e-12);
+  EXPECT_GT(40 * std::asin(x_max / 40) - x_max, 1e-3 * x_max);
 }
 
 
@@ -410,6 +433,26 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
   two->assemble();
   two->build_contact_surface();
   expect_same_gaps(*one, *two, 12);
+
+  // The positions s along the surface are the projections x of the points
+  // on the plane normal to the contact direction (the x axis), not arc
+  // lengths R asin(x / R), which exceed them by 1 % at x = 0.25 R: the outer
+  // edge of every element is the largest |x| of its vertices, and that of
+  // the surface the largest |x| of all.
+  const auto &surface = one->surface(0);
+  double      x_max = 0, s_max = 0;
+  for (const auto &e : surface.get_elements())
+    {
+      double x_e = 0;
+      for (const unsigned int f : e.faces)
+        for (const auto &x : surface.get_faces()[f].points)
+          x_e = std::max(x_e, std::abs(x[0]));
+      EXPECT_NEAR(std::max(std::abs(e.s_min), std::abs(e.s_max)), x_e, 1e-12);
+      x_max = std::max(x_max, x_e);
+      s_max = std::max({s_max, std::abs(e.s_min), std::abs(e.s_max)});
+    }
+  EXPECT_NEAR(s_max, x_max, 1e-12);
+  EXPECT_GT(40 * std::asin(x_max / 40) - x_max, 1e-3 * x_max);
 }
 
 

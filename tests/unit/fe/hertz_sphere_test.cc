@@ -7,13 +7,19 @@
 // pressure, and the quarter sphere of prm/hertz_sphere_rigid.prm, meshed by
 // gmsh from scripts/meshes/sphere.geo, against the formulas.
 
+#include <dpana/scene/approach.h>
 #include <dpana/scene/references.h>
 #include <dpana/scene/scene.h>
+
+#include <deal.II/base/function.h>
+
+#include <deal.II/numerics/vector_tools_interpolate.h>
 
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,6 +39,19 @@ namespace
     const std::string here = __FILE__;
     return here.substr(0, here.rfind("/tests/unit/fe/")) +
            "/scripts/meshes/make_sphere.py";
+  }
+
+  // Writes the mesh of level @p level of make_sphere.py for the tests.
+  std::string
+  sphere_mesh(const int level)
+  {
+    const std::string mesh =
+      "meshes/unit_hertz_sphere_L" + std::to_string(level) + ".msh";
+    const std::string command = "python3 " + mesh_script() + " " + mesh +
+                                " --level " + std::to_string(level) +
+                                " > /dev/null";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return mesh;
   }
 
   // The values of the comparison "hertz sphere" of a run, by name.
@@ -173,7 +192,17 @@ TEST(HertzSphere, MomentRadiusOfTheEllipticPressure)
 //   averages p over r < h (p0 (1 - h^2 / (4 a^2)) for the exact profile,
 //   0.2 % below p0 at h = a/5) and the discrete solution overshoots it by a
 //   few tenths of a percent;
-// - the outer edge of the elements in contact within one element of a.
+// - the outer edge of the elements in contact within one element of a;
+// - the approach of the sphere's centre (at the depth R below the contact
+//   point) within a/R = 10 % of Hertz's delta = a^2 / R and below it:
+//   delta is the approach of the distant points of a half-space, and at
+//   the depth R the half-space field of the contact has not decayed (its
+//   Boussinesq displacement there, 0.69 a/R delta for nu = 0.2, is not part
+//   of the centre's approach); the sphere's own compression between the
+//   centre and the contact, of the order P / (pi E R) = 0.44 a/R delta, is
+//   not modelled by Hertz. Hence also within 5 % (0.44 a/R, rounded up) of
+//   delta less that Boussinesq displacement. Measured: -5.0 % and +2.1 %
+//   at level 1 (doc/contact.md).
 // A factor of the moment estimate, the model fraction, the compliance or
 // the load path off by more than these bands fails the test.
 TEST(HertzSphere, QuarterSphereOnRigidPlaneAgainstHertz)
@@ -181,14 +210,8 @@ TEST(HertzSphere, QuarterSphereOnRigidPlaneAgainstHertz)
   double previous_a_m_error = 1;
   for (const int level : {1, 2})
     {
-      const std::string mesh =
-        "meshes/unit_hertz_sphere_L" + std::to_string(level) + ".msh";
-      const std::string command = "python3 " + mesh_script() + " " + mesh +
-                                  " --level " + std::to_string(level) +
-                                  " > /dev/null";
-      ASSERT_EQ(std::system(command.c_str()), 0) << command;
-
-      auto scene = dpana::test::make_scene<3>(sphere_prm(mesh, 0));
+      const std::string mesh  = sphere_mesh(level);
+      auto              scene = dpana::test::make_scene<3>(sphere_prm(mesh, 0));
       scene->run(false);
       ASSERT_TRUE(scene->summary().result.converged);
       auto v = hertz_sphere_values(scene->summary());
@@ -199,6 +222,93 @@ TEST(HertzSphere, QuarterSphereOnRigidPlaneAgainstHertz)
       EXPECT_LT(std::abs(v["a_moment_error"]), std::abs(previous_a_m_error));
       EXPECT_LT(std::abs(v["N_max_error"]), 0.01) << "level " << level;
       EXPECT_LE(std::abs(v["a_edge"] - v["a"]), v["a_edge_element"]);
+      ASSERT_TRUE(scene->summary().estimates.approach_measured);
+      EXPECT_EQ(v["approach_measured"], scene->summary().estimates.approach);
+      EXPECT_LT(std::abs(v["approach_error"]), 0.10) << "level " << level;
+      EXPECT_LT(v["approach_measured"], v["approach"]);
+      EXPECT_LT(std::abs(v["approach_at_centres_error"]), 0.05)
+        << "level " << level;
       previous_a_m_error = v["a_moment_error"];
     }
+}
+
+
+
+// The grouping of the unstructured cap (level 1: 1000 triangles) into
+// contact elements of 8 triangles: every face in exactly one element, and
+// no element of fewer than 4 triangles (the greedy agglomeration alone
+// leaves groups of 1 to 3 triangles where a group cannot grow; they must
+// have joined a neighbour; one that takes in two of them holds at most
+// 8 + 3 + 3 = 14 faces).
+TEST(HertzSphere, GroupingOfTheCapLeavesNoSmallElements)
+{
+  auto scene = dpana::test::make_scene<3>(sphere_prm(sphere_mesh(1), 0));
+  scene->assemble();
+  scene->build_contact_surface();
+  const auto            &surface = scene->surface(0);
+  std::set<unsigned int> used;
+  unsigned int           n_faces = 0;
+  for (const auto &e : surface.get_elements())
+    {
+      EXPECT_GE(e.faces.size(), 4u);
+      EXPECT_LE(e.faces.size(), 14u);
+      used.insert(e.faces.begin(), e.faces.end());
+      n_faces += e.faces.size();
+    }
+  EXPECT_EQ(used.size(), surface.get_faces().size());
+  EXPECT_EQ(n_faces, surface.get_faces().size());
+}
+
+
+
+// The approach on a displacement known in closed form: on the box
+// [0, 8] x [0, 2] x [0, 4] the linear field u = (0.3 y, -0.01 y + 0.002,
+// 0.05 z), which the P1 space holds exactly. Along n = (0, -1, 0), from the
+// contact point (4, 0, 2) to the far point (4, 2, 2):
+// (u(far) - u(contact)) . n = -(-0.01 * 2) = +0.02, whatever the rigid
+// part (the constant 0.002) and the tangential parts; the partner's sign
+// gives -0.02. And the Boussinesq displacement by hand: P = 2 pi, E = 1,
+// nu = 0.5, z = 1: 2 pi * 1.5 * 2 / (2 pi) = 3.
+TEST(HertzSphere, ApproachOfALinearDisplacement)
+{
+  auto scene = dpana::test::make_scene<3>(
+    "set Dimension = 3\n" +
+    dpana::test::brick_body("Body 1",
+                            "box",
+                            "0, 0, 0",
+                            "8, 2, 4",
+                            "4, 1, 2",
+                            "    set Fixed = top: x, y, z\n",
+                            ""));
+  scene->assemble();
+  auto &body = scene->body(0);
+  struct Linear : dealii::Function<3>
+  {
+    Linear()
+      : dealii::Function<3>(3)
+    {
+    }
+    double
+    value(const dealii::Point<3> &x, const unsigned int c) const override
+    {
+      return c == 0 ? 0.3 * x[1] : c == 1 ? -0.01 * x[1] + 0.002 : 0.05 * x[2];
+    }
+  };
+  dealii::Vector<double> u(body.dof_handler().n_dofs());
+  dealii::VectorTools::interpolate(body.mapping(),
+                                   body.dof_handler(),
+                                   Linear(),
+                                   u);
+  body.set_solution(u);
+  const dealii::Point<3>     contact(4, 0, 2), far(4, 2, 2);
+  const dealii::Tensor<1, 3> n({0, -1, 0});
+  EXPECT_NEAR(dpana::scene::body_approach(body, contact, far, n, 1.),
+              0.02,
+              1e-14);
+  EXPECT_NEAR(dpana::scene::body_approach(body, contact, far, n, -1.),
+              -0.02,
+              1e-14);
+  EXPECT_NEAR(dpana::scene::boussinesq_axial_displacement(2 * M_PI, 1, 0.5, 1),
+              3.0,
+              1e-14);
 }
