@@ -180,7 +180,7 @@ TEST(HertzSphere, MomentRadiusOfTheEllipticPressure)
 
 // The quarter sphere of prm/hertz_sphere_rigid.prm (a/R = 0.10) on the
 // meshes of levels 1 and 2 of scripts/meshes/make_sphere.py (9000 and 17 500
-// unknowns, 121 and 247 contact elements), made by gmsh for the test. The
+// unknowns, 106 and 208 contact elements), made by gmsh for the test. The
 // bands:
 // - the resultant equals P to round-off (equilibrium of the floating
 //   sphere: its fictitious support carries nothing);
