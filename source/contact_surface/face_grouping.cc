@@ -228,16 +228,21 @@ namespace dpana
     void
     ContactSurface<dim>::merge_leftovers(const unsigned int size)
     {
-      std::map<std::vector<unsigned int>, std::vector<unsigned int>> edge_faces;
+      // The edges of a face (sorted vertex pairs), and the faces that share
+      // each edge.
+      const auto edges_of = [&](const unsigned int f) {
+        const auto &v = faces[f].vertices;
+        std::vector<std::pair<unsigned int, unsigned int>> edges;
+        for (unsigned int i = 0; i < v.size(); ++i)
+          edges.emplace_back(std::min(v[i], v[(i + 1) % v.size()]),
+                             std::max(v[i], v[(i + 1) % v.size()]));
+        return edges;
+      };
+      std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
+        edge_faces;
       for (unsigned int f = 0; f < faces.size(); ++f)
-        for (unsigned int i = 0; i < faces[f].vertices.size(); ++i)
-          {
-            std::vector<unsigned int> edge{
-              faces[f].vertices[i],
-              faces[f].vertices[(i + 1) % faces[f].vertices.size()]};
-            std::sort(edge.begin(), edge.end());
-            edge_faces[edge].push_back(f);
-          }
+        for (const auto &edge : edges_of(f))
+          edge_faces[edge].push_back(f);
       std::vector<unsigned int> owner(faces.size());
       std::vector<double>       area(elements.size(), 0.);
       for (unsigned int j = 0; j < elements.size(); ++j)
@@ -260,14 +265,17 @@ namespace dpana
       for (const unsigned int j : small)
         {
           unsigned int best = dealii::numbers::invalid_unsigned_int;
-          for (const auto &[edge, fs] : edge_faces)
-            if (fs.size() == 2 && (owner[fs[0]] == j) != (owner[fs[1]] == j))
-              {
-                const unsigned int k = owner[fs[owner[fs[0]] == j ? 1 : 0]];
-                if (best == dealii::numbers::invalid_unsigned_int ||
-                    area[k] < area[best] || (area[k] == area[best] && k < best))
-                  best = k;
-              }
+          for (const unsigned int f : elements[j].faces)
+            for (const auto &edge : edges_of(f))
+              for (const unsigned int g : edge_faces[edge])
+                {
+                  const unsigned int k = owner[g];
+                  if (k != j &&
+                      (best == dealii::numbers::invalid_unsigned_int ||
+                       area[k] < area[best] ||
+                       (area[k] == area[best] && k < best)))
+                    best = k;
+                }
           if (best == dealii::numbers::invalid_unsigned_int)
             continue;
           for (const unsigned int f : elements[j].faces)
