@@ -308,11 +308,24 @@ namespace dpana
       summary.estimates.approach_measured = false;
       if (type != "hertz sphere" || (bodies.size() > 1 && !(radius_2 > 0)))
         return;
-      const dealii::Point<dim>     x0 = surface.options().region_centre;
-      const dealii::Tensor<1, dim> n  = surface.surface_normal();
-      double delta = body_approach(*bodies[0], x0, x0 - radius_1 * n, n, 1.);
-      if (bodies.size() > 1)
-        delta += body_approach(*bodies[1], x0, x0 + radius_2 * n, n, -1.);
+      const dealii::Point<dim>     x0    = surface.options().region_centre;
+      const dealii::Tensor<1, dim> n     = surface.surface_normal();
+      double                       delta = 0;
+      try
+        {
+          delta = body_approach(*bodies[0], x0, x0 - radius_1 * n, n, 1.);
+          if (bodies.size() > 1)
+            delta += body_approach(*bodies[1], x0, x0 + radius_2 * n, n, -1.);
+        }
+      catch (const std::exception &)
+        {
+          // A mesh of a part of the sphere need not hold its centre.
+          std::cerr << "dpana: warning: Contact / Reference: the centre of a "
+                       "sphere or the contact point lies outside its mesh; "
+                       "the approach is not measured"
+                    << std::endl;
+          return;
+        }
       summary.estimates.approach_measured = true;
       summary.estimates.approach          = delta;
     }

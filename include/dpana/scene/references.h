@@ -158,8 +158,10 @@ namespace dpana
        * x0 on its surface, summed over the bodies; a rigid plane or seat
        * adds nothing. The bodies must hold their displacements. A second
        * body that is no sphere (Radius 2 <= 0) has no centre: then nothing
-       * is measured. The plane Hertz solution has no approach (that of
-       * an infinite body in plane strain is unbounded), so 2D measures none.
+       * is measured; nor, with a warning, when a centre or the contact point
+       * lies outside the mesh of its body (a mesh of a part of the sphere). The
+       * plane Hertz solution has no approach (that of an infinite body in plane
+       * strain is unbounded), so 2D measures none.
        */
       void
       measure_approach(const std::vector<std::unique_ptr<Body<dim>>> &bodies,

@@ -312,3 +312,21 @@ TEST(HertzSphere, ApproachOfALinearDisplacement)
               3.0,
               1e-14);
 }
+
+
+
+// A sphere whose centre the mesh does not hold (Radius 1 = 100 mm puts it at
+// (0, 100, 0), outside the sphere of radius 40 meshed at level 0): the run
+// completes, and the approach is not measured rather than taken from a
+// point outside the body.
+TEST(HertzSphere, ApproachNotMeasuredOutsideTheMesh)
+{
+  std::string prm = sphere_prm(sphere_mesh(0), 0);
+  prm.replace(prm.find("Radius 1 = 40"), 13, "Radius 1 = 100");
+  auto scene = dpana::test::make_scene<3>(prm);
+  scene->run(false);
+  ASSERT_TRUE(scene->summary().result.converged);
+  EXPECT_FALSE(scene->summary().estimates.approach_measured);
+  EXPECT_EQ(hertz_sphere_values(scene->summary()).count("approach_measured"),
+            0u);
+}
