@@ -1,8 +1,8 @@
 #!/bin/bash
 # Builds dpana with AddressSanitizer and UndefinedBehaviorSanitizer in its own
 # build directory and runs the unit tests, the .prm regression runs and the
-# fuzz test there, all with leak detection on. Any sanitizer report stops the offending run with a
-# non-zero status, so the ctest that ran it fails.
+# fuzz test there, all with leak detection on. Any sanitizer report stops
+# the offending run with a non-zero status, so the ctest that ran it fails.
 #
 #   scripts/sanitize.sh [BUILD_DIR]      (default: build-sanitize)
 #
