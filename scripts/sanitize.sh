@@ -16,7 +16,8 @@ flags="$flags -fno-sanitize-recover=undefined"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
   -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" > /dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DDPANA_FUZZ_TIMEOUT=5400 > /dev/null
 cmake --build "$build" -j2 \
   --target dpana dpana_contact_tests dpana_fe_tests
 
