@@ -15,6 +15,7 @@ results/getfem.png (dpana and GetFEM on the same axes).
 """
 
 import glob
+import itertools
 import json
 import os
 import sys
@@ -310,7 +311,7 @@ def plot_peer(axes, summary):
     both solve, against the common reference; GetFEM-only families dotted.
     Families whose errors are round-off (exact on every level) are left
     out: the tables give them."""
-    colours = iter(["C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7"])
+    colours = itertools.cycle(f"C{k}" for k in range(10))
     for name, codes in summary.items():
         if "getfem" not in codes:
             continue
