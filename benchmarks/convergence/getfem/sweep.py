@@ -6,6 +6,8 @@ dpana sweep (code "getfem").
 Families (each compared with the dpana family of the same name,
 families.py):
   hertz_rigid_mu0           hertz.py --body circle (the circular body)
+  hertz_rigid_mu0_r10       the same (paired with dpana's disc refined
+                            within 10 mm instead of 14)
   hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
                             the centre)
   receding_2d_mu0           receding.py
@@ -37,6 +39,9 @@ import records as records_io  # noqa: E402  (benchmarks/convergence/)
 FAMILIES = {
     "hertz_rigid_mu0": (["hertz.py", "--body", "circle"], range(-2, 5),
                         [5]),
+    # The same GetFEM sweep, paired with dpana's leaner disc mesh.
+    "hertz_rigid_mu0_r10": (["hertz.py", "--body", "circle"], range(-2, 5),
+                            [5]),
     "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
                                  range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
