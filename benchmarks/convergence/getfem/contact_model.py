@@ -10,6 +10,10 @@ GetFEM's own static contact example, by a mass term of tiny weight
 force eps |Omega| |u_y|, some 1e-10 of the load here.
 """
 
+import json
+import sys
+import time
+
 import numpy as np
 import getfem as gf
 
@@ -135,6 +139,15 @@ class ElasticBody:
                                        max_iter, "lsearch", "default")
         return int(nit), bool(converged)
 
+    def record(self, nit, converged, dofs=None, **extra):
+        """The record of a solved level: sizes, Newton iterations, extra
+        entries and the quantities of pressure_quantities()."""
+        record = {"dofs": int(self.mfu.nbdof() if dofs is None else dofs),
+                  "contact_unknowns": len(self.contact_dofs),
+                  "iterations": nit, "converged": converged, **extra}
+        record.update(pressure_quantities(*self.nodal_pressures()))
+        return record
+
     def nodal_pressures(self):
         """Contact nodes (coordinates, dim x n), the nodal force F >= 0 (N/mm
         in 2D, N in 3D) and the pressure p = F / (the tributary length or
@@ -176,3 +189,11 @@ def pressure_quantities(nodes, force, p):
     else:
         q["a_m"] = float(np.sqrt(2.5 * moment))
     return q
+
+
+def emit(record, start):
+    """Adds the time since start (the GetFEM work: mesh import, assembly,
+    solve and post-processing) and prints the record as one JSON line."""
+    record["solve_time"] = time.perf_counter() - start
+    json.dump(record, sys.stdout)
+    print()

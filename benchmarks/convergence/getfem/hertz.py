@@ -24,13 +24,11 @@ and the quantities of pressure_quantities().
 """
 
 import argparse
-import json
 import math
-import sys
 import tempfile
 import time
 
-from contact_model import ElasticBody, boundary_faces, pressure_quantities
+from contact_model import ElasticBody, boundary_faces, emit
 from mesh import hertz_mesh
 
 R, E, NU, P = 40.0, 130000.0, 0.2, 200000.0
@@ -74,10 +72,7 @@ def solve(gf, msh, ratio, args):
     # as with 1e-11 of it (checked on levels 2 and 3); 1e-14 of it is below
     # the round-off floor and does not converge.
     nit, converged = body.solve(1e-8 * P)
-    record = {"dofs": int(dofs), "contact_unknowns": len(body.contact_dofs),
-              "iterations": nit, "converged": converged}
-    record.update(pressure_quantities(*body.nodal_pressures()))
-    return record
+    return body.record(nit, converged, dofs)
 
 
 def main():
@@ -101,7 +96,6 @@ def main():
         import getfem as gf
         start = time.perf_counter()
         record = solve(gf, msh, args.ratio, args)
-    record["solve_time"] = time.perf_counter() - start
     record["h_c"] = hc
     # Plane Hertz: a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a), with
     # 1/E* = (1 - nu^2) (1/E1 + 1/E2).
@@ -109,8 +103,7 @@ def main():
     a = math.sqrt(4 * P * R * inv / math.pi)
     record["hertz"] = {"a": a, "N_max": 2 * P / (math.pi * a)}
     record["meshing_time"] = meshing
-    json.dump(record, sys.stdout)
-    print()
+    emit(record, start)
 
 
 if __name__ == "__main__":

@@ -13,13 +13,11 @@ Prints one JSON record (see hertz.py).
 """
 
 import argparse
-import json
-import sys
 import time
 
 import numpy as np
 
-from contact_model import ElasticBody, boundary_faces, pressure_quantities
+from contact_model import ElasticBody, boundary_faces, emit
 
 L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.0, 50.0, 100.0
 BOTTOM, LEFT, FRONT, UPPER, RIGHT = 10, 11, 12, 13, 14
@@ -55,13 +53,7 @@ def main():
     # the friction conditions by r), with 1e-12 before the answer settles
     # (N_max 97.435 against 97.377 MPa at k = 4).
     nit, converged = body.solve(1e-14 * TOP * L * L)
-    record = {"dofs": int(body.mfu.nbdof()),
-              "contact_unknowns": len(body.contact_dofs),
-              "iterations": nit, "converged": converged, "k": k}
-    record.update(pressure_quantities(*body.nodal_pressures()))
-    record["solve_time"] = time.perf_counter() - start
-    json.dump(record, sys.stdout)
-    print()
+    emit(body.record(nit, converged, k=k), start)
 
 
 if __name__ == "__main__":

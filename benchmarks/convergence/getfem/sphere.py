@@ -14,13 +14,12 @@ Prints one JSON record (see hertz.py).
 """
 
 import argparse
-import json
 import math
 import os
 import sys
 import time
 
-from contact_model import ElasticBody, pressure_quantities
+from contact_model import ElasticBody, emit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
@@ -50,16 +49,9 @@ def main():
     # floor (100 iterations without convergence, the answers to 7 digits
     # those of 1e-10, reached in 10 iterations).
     nit, converged = body.solve(1e-10 * P)
-    record = {"dofs": int(body.mfu.nbdof()),
-              "contact_unknowns": len(body.contact_dofs),
-              "iterations": nit, "converged": converged}
-    record.update(pressure_quantities(*body.nodal_pressures()))
-    record["solve_time"] = time.perf_counter() - start
     a = (3 * P * R * (1 - NU * NU) / (4 * E)) ** (1 / 3)
-    record["hertz"] = {"a": a, "N_max": 3 * P / (2 * math.pi * a * a)}
-    record["meshing_time"] = meshing
-    json.dump(record, sys.stdout)
-    print()
+    emit(body.record(nit, converged, meshing_time=meshing, hertz={
+        "a": a, "N_max": 3 * P / (2 * math.pi * a * a)}), start)
 
 
 if __name__ == "__main__":

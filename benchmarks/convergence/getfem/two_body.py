@@ -14,13 +14,11 @@ Prints one JSON record (see hertz.py).
 """
 
 import argparse
-import json
-import sys
 import time
 
 import numpy as np
 
-from contact_model import ElasticBody, boundary_faces, pressure_quantities
+from contact_model import ElasticBody, boundary_faces, emit
 
 L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
 BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
@@ -71,13 +69,8 @@ def main():
     # A residual of 1e-10 of the load, as for the receding block with
     # friction (receding.py).
     nit, converged = body.solve(1e-10 * TOP * L)
-    record = {"dofs": int(body.mfu.nbdof() + base.mfu.nbdof()),
-              "contact_unknowns": len(body.contact_dofs),
-              "iterations": nit, "converged": converged, "n": n}
-    record.update(pressure_quantities(*body.nodal_pressures()))
-    record["solve_time"] = time.perf_counter() - start
-    json.dump(record, sys.stdout)
-    print()
+    emit(body.record(nit, converged, body.mfu.nbdof() + base.mfu.nbdof(),
+                     n=n), start)
 
 
 if __name__ == "__main__":
