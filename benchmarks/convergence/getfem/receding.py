@@ -23,15 +23,9 @@ L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
 BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--level", type=int, required=True)
-    parser.add_argument("--mu", type=float, default=0.0,
-                        help="friction coefficient (receding_2d_mu1: 1)")
-    args = parser.parse_args()
-    n = 4 * 2 ** args.level
-    import getfem as gf
-    start = time.perf_counter()
+def loaded_block(gf, n):
+    """The half block on n x n squares of two P1 triangles, with its
+    symmetry condition and loads (its base is the region BOTTOM)."""
     grid = np.linspace(0.0, L, n + 1)
     mesh = gf.Mesh("regular simplices", grid, grid)
     tol = 1e-9 * L
@@ -41,10 +35,21 @@ def main():
     mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
     body = ElasticBody(mesh, E, NU)
     body.symmetry(LEFT)
-    body.md.add_initialized_data("top", [0.0, -TOP])
-    body.md.add_source_term_brick(body.mim, "u", "top", UPPER)
-    body.md.add_initialized_data("side", [-SIDE, 0.0])
-    body.md.add_source_term_brick(body.mim, "u", "side", RIGHT)
+    body.traction(UPPER, [0.0, -TOP])
+    body.traction(RIGHT, [-SIDE, 0.0])
+    return body
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--level", type=int, required=True)
+    parser.add_argument("--mu", type=float, default=0.0,
+                        help="friction coefficient (receding_2d_mu1: 1)")
+    args = parser.parse_args()
+    n = 4 * 2 ** args.level
+    import getfem as gf
+    start = time.perf_counter()
+    body = loaded_block(gf, n)
     body.contact(BOTTOM, E, args.mu)
     # GetFEM's residual divides the rows of the contact conditions by r:
     # with friction, a tolerance of 1e-8 of the load let Newton stop on a

@@ -19,20 +19,8 @@ import time
 import numpy as np
 
 from contact_model import ElasticBody, boundary_faces, emit
-
-L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
-BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
+from receding import BOTTOM, E, L, NU, TOP, loaded_block
 F_TOP, F_LEFT, F_BASE = 20, 21, 22
-
-
-def block(gf, n, tol):
-    grid = np.linspace(0.0, L, n + 1)
-    mesh = gf.Mesh("regular simplices", grid, grid)
-    mesh.set_region(BOTTOM, boundary_faces(mesh, lambda x, y: y < tol))
-    mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y: x < tol))
-    mesh.set_region(UPPER, boundary_faces(mesh, lambda x, y: y > L - tol))
-    mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
-    return mesh
 
 
 def foundation(gf, n, tol):
@@ -54,13 +42,9 @@ def main():
     n = 4 * 2 ** args.level
     import getfem as gf
     start = time.perf_counter()
-    tol = 1e-9 * L
-    body = ElasticBody(block(gf, n, tol), E, NU)
-    base = ElasticBody(foundation(gf, n, tol), E / args.ratio, NU,
+    body = loaded_block(gf, n)
+    base = ElasticBody(foundation(gf, n, 1e-9 * L), E / args.ratio, NU,
                        model=body.md, name="v", held=True)
-    body.symmetry(LEFT)
-    body.traction(UPPER, [0.0, -TOP])
-    body.traction(RIGHT, [-SIDE, 0.0])
     base.symmetry(F_LEFT)
     base.fixed(F_BASE)
     # Augmentation: the smaller modulus (GetFEM's advice: close to the
