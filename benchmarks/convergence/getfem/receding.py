@@ -23,7 +23,7 @@ L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
 BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
 
 
-def loaded_block(gf, n):
+def loaded_block(gf, n, nu=NU):
     """The half block on n x n squares of two P1 triangles, with its
     symmetry condition and loads (its base is the region BOTTOM)."""
     grid = np.linspace(0.0, L, n + 1)
@@ -33,7 +33,7 @@ def loaded_block(gf, n):
     mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y: x < tol))
     mesh.set_region(UPPER, boundary_faces(mesh, lambda x, y: y > L - tol))
     mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
-    body = ElasticBody(mesh, E, NU)
+    body = ElasticBody(mesh, E, nu)
     body.symmetry(LEFT)
     body.traction(UPPER, [0.0, -TOP])
     body.traction(RIGHT, [-SIDE, 0.0])
@@ -45,11 +45,13 @@ def main():
     parser.add_argument("--level", type=int, required=True)
     parser.add_argument("--mu", type=float, default=0.0,
                         help="friction coefficient (receding_2d_mu1: 1)")
+    parser.add_argument("--nu", type=float, default=NU,
+                        help="Poisson's ratio (receding_2d_nu0_mu1: 0)")
     args = parser.parse_args()
     n = 4 * 2 ** args.level
     import getfem as gf
     start = time.perf_counter()
-    body = loaded_block(gf, n)
+    body = loaded_block(gf, n, args.nu)
     body.contact(BOTTOM, E, args.mu)
     # GetFEM's residual divides the rows of the contact conditions by r:
     # with friction, a tolerance of 1e-8 of the load let Newton stop on a
