@@ -9,7 +9,8 @@ the exact value (where the scene has one) or the extrapolated value, and
 the time to reach 1 % and 0.1 %. Writes results/convergence.md (the
 tables), results/summary.json, results/<family>.png (error against solve
 time and against dofs) and results/speed_vs_error.png (every family) and
-results/getfem.png (dpana and GetFEM on the same axes).
+results/getfem.png (dpana and GetFEM on the same axes, one panel per
+family).
 
   analyse.py RESULTS_DIR
 """
@@ -108,8 +109,8 @@ def quantity_table(rows):
     for code, s, hertz in rows:
         x = s["extrapolated"]
         if s["exact"] is not None:
-            value, order, prev, asym = f"{s['exact']:.7g} (exact)", "—", \
-                "—", "—"
+            value, order, prev, asym = \
+                f"{s['exact']:.7g} ({s['label']})", "—", "—", "—"
         else:
             value = fmt(x["value"], 7)
             order, prev = fmt(x["order"], 3), fmt(x["previous_order"], 3)
@@ -203,7 +204,8 @@ def analyse_runs(runs):
                 runs.get(("dpana", name), {"ok": []}))) if fam.hertz \
                 else None
             summary.setdefault(name, {})[code] = {
-                "studies": [study(run, q, fam.exact.get(q))
+                "studies": [{**study(run, q, fam.exact.get(q)),
+                             "label": fam.exact_label.get(q, "exact")}
                             for q in fam.quantities
                             if any(q in r for r in run["ok"])],
                 "records": run["ok"], "hertz": hertz}
@@ -283,12 +285,7 @@ def main():
         md += family_section(name, codes, directory, plt)
     md += comparison_section(summary)
     plot_all(summary, directory, plt)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-    plot_peer(axes, summary)
-    decorate(*axes, "dpana (circles, solid) and GetFEM (squares, dashed; "
-             "dotted: GetFEM without a dpana family)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(directory, "getfem.png"), dpi=80)
+    plot_peer(summary, directory, plt)
     with open(os.path.join(directory, "convergence.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     write_summary(summary, directory)
@@ -305,35 +302,57 @@ def common_reference(sd, sg):
     return ref, abs(sd["reference"] - sg["reference"]) / abs(ref)
 
 
-def plot_peer(axes, summary):
-    """dpana (circles, solid) and GetFEM (squares, dashed) on the families
-    both solve, against the common reference; GetFEM-only families dotted.
-    Families whose errors are round-off (exact on every level) are left
-    out: the tables give them."""
-    colours = iter(["C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7"])
-    for name, codes in summary.items():
-        if "getfem" not in codes:
+def peer_curves(codes, fam):
+    """(quantity, [(study, style, code)], reference) of the plotted
+    quantities that GetFEM solves, dpana's study next to GetFEM's where
+    both exist; quantities whose errors are round-off are left out."""
+    mates = {s["quantity"]: s for s in
+             codes.get("dpana", {}).get("studies", [])}
+    for sg in codes["getfem"]["studies"]:
+        if sg["quantity"] not in fam.plot or max(sg["errors"]) < 1e-8:
             continue
-        fam = family_of(name)
-        mates = {s["quantity"]: s for s in
-                 codes.get("dpana", {}).get("studies", [])}
-        for sg in codes["getfem"]["studies"]:
-            if sg["quantity"] not in fam.plot or max(sg["errors"]) < 1e-8:
-                continue
-            colour = next(colours)
-            sd = mates.get(sg["quantity"])
-            ref = common_reference(sd, sg)[0] if sd else sg["reference"]
-            pairs = [(sg, "s--" if sd else "s:", "GetFEM")]
-            if sd:
-                pairs.append((sd, "o-", "dpana"))
+        sd = mates.get(sg["quantity"])
+        ref = common_reference(sd, sg)[0] if sd else sg["reference"]
+        pairs = [(sg, "s--" if sd else "s:", "GetFEM")]
+        if sd:
+            pairs.append((sd, "o-", "dpana"))
+        yield sg["quantity"], pairs, ref
+
+
+def plot_peer(summary, directory, plt):
+    """getfem.png: one panel per family that GetFEM solves, error against
+    solve time, dpana (circles, solid) and GetFEM (squares, dashed; dotted
+    without a dpana family) against the common reference; the tables give
+    the families that are exact on every level."""
+    names = [n for n, c in summary.items() if "getfem" in c and any(
+        True for _ in peer_curves(c, family_of(n)))]
+    if not names:
+        return
+    cols = 3
+    rows = (len(names) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.4 * rows),
+                             squeeze=False)
+    for ax, name in zip(axes.flat, names):
+        for k, (q, pairs, ref) in enumerate(
+                peer_curves(summary[name], family_of(name))):
             for s, style, code in pairs:
-                pts = [(t, d, e) for t, d, e in zip(
-                    s["times"], s["dofs"], relative_errors(s["values"], ref))
-                    if e > 0]
-                t, d, e = zip(*pts)
-                label = f"{code} {name} {s['quantity']}"
-                axes[0].loglog(t, e, style, color=colour, label=label)
-                axes[1].loglog(d, e, style, color=colour, label=label)
+                pts = [(t, e) for t, e in zip(
+                    s["times"], relative_errors(s["values"], ref)) if e > 0]
+                if pts:
+                    ax.loglog(*zip(*pts), style, color=f"C{k}",
+                              label=f"{code} {q}")
+        ax.axhline(0.01, color="grey", lw=0.5, ls=":")
+        ax.axhline(0.001, color="grey", lw=0.5, ls=":")
+        ax.grid(True, which="both", lw=0.2)
+        ax.set_title(name, fontsize=9)
+        ax.set_xlabel("solve time (s)", fontsize=8)
+        ax.set_ylabel("relative error", fontsize=8)
+        ax.legend(fontsize=6)
+    for ax in list(axes.flat)[len(names):]:
+        ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(directory, "getfem.png"), dpi=70)
+    plt.close(fig)
 
 
 def overview(summary):
@@ -352,7 +371,8 @@ def overview(summary):
                 continue
             x = s["extrapolated"]
             exact = s["exact"] is not None
-            value = f"{s['reference']:.7g}" + (" (exact)" if exact else "")
+            value = f"{s['reference']:.7g}" + (
+                f" ({s['label']})" if exact else "")
             hertz = codes["dpana"]["hertz"]
             key = "a" if s["quantity"] == "a_m" else s["quantity"]
             h = f"{(s['reference'] - hertz[key]) / hertz[key]:+.2%}" \

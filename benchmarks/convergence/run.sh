@@ -71,9 +71,12 @@ cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
 
 # The families GetFEM also solves: those the sweep is asked for (all by
 # default). They are timed side by side, dpana then GetFEM per family, and
-# every level runs twice, its fastest run kept (the machine may be shared).
-peer_all=(hertz_rigid_mu0 hertz_rigid_mu0_d_shaped receding_2d_mu0
-  receding_2d_mu1)
+# every level runs twice (DPANA_REPEAT), its fastest run kept (the machine
+# may be shared).
+repeat="${DPANA_REPEAT:-2}"
+peer_all=(hertz_rigid_mu0 hertz_rigid_mu0_r10 hertz_rigid_mu0_d_shaped receding_2d_mu0
+  receding_2d_mu1 two_body_ratio_1 two_body_ratio_1e-3 two_body_ratio_1e3
+  hertz_ratio_1_mu0 receding_3d_L80 hertz_sphere_rigid)
 peer=()
 rest=()
 if [ ${#families[@]} -eq 0 ]; then
@@ -92,8 +95,8 @@ mkdir -p "$out"
 echo "run.sh: load average $(cut -d' ' -f1-3 /proc/loadavg)"
 for f in "${peer[@]}"; do
   "$python" "$here/sweep.py" --dpana "$build/dpana" --prm-dir "$top/prm" \
-    --out "$out" --repeat 2 "${full[@]}" "$f"
-  "$python" "$here/getfem/sweep.py" --out "$out" --repeat 2 "${full[@]}" "$f"
+    --out "$out" --repeat "$repeat" "${full[@]}" "$f"
+  "$python" "$here/getfem/sweep.py" --out "$out" --repeat "$repeat" "${full[@]}" "$f"
 done
 if [ ${#rest[@]} -gt 0 ]; then
   "$python" "$here/sweep.py" --dpana "$build/dpana" --prm-dir "$top/prm" \

@@ -1,116 +1,199 @@
-"""The parts the GetFEM scenes share: a plane-strain linear elastic body of
-P1 triangles on a rigid plane y = 0, with GetFEM's nodal contact brick
-(frictionless, non-symmetric Alart-Curnier augmented Lagrangian, solved by
-GetFEM's Newton method), and the nodal contact pressures.
+"""The parts the GetFEM scenes share: linear elastic bodies of P1 simplices
+(plane strain in 2D), GetFEM's nodal contact bricks (non-symmetric
+Alart-Curnier augmented Lagrangian, frictionless or with Coulomb friction,
+solved by GetFEM's Newton method) with a rigid plane or between two bodies,
+and the nodal contact pressures.
 
-The body is held in y by contact only. Its rigid translation is removed as
-in GetFEM's own static contact example, by a mass term of tiny weight
-(eps = 1e-8 MPa/mm^2 times the displacement): over the body's area it
-carries a force eps |Omega| |u_y|, some 1e-10 of the load here.
+A body held by contact only (in y) has its rigid translation removed as in
+GetFEM's own static contact example, by a mass term of tiny weight
+(eps = 1e-8 MPa/mm^2 times the displacement): over the body it carries a
+force eps |Omega| |u_y|, some 1e-10 of the load here.
 """
+
+import json
+import sys
+import time
 
 import numpy as np
 import getfem as gf
 
 
 def lame(E, nu):
-    """Lame constants of plane strain (GetFEM's 2D elasticity brick)."""
+    """Lame constants (GetFEM's elasticity brick: plane strain in 2D)."""
     return E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 
 
 def boundary_faces(mesh, keep):
-    """Outer faces (2 x n array: convex, face) whose two vertices satisfy
-    keep(x, y)."""
+    """Outer faces (2 x n array: convex, face) whose vertices all satisfy
+    keep(x, y) (2D) or keep(x, y, z) (3D)."""
     faces = mesh.outer_faces()
     chosen = []
     for j in range(faces.shape[1]):
-        pts = mesh.pid_in_faces(faces[:, j:j + 1])
-        xy = mesh.pts(pts)
-        if all(keep(xy[0, k], xy[1, k]) for k in range(xy.shape[1])):
+        xyz = mesh.pts(mesh.pid_in_faces(faces[:, j:j + 1]))
+        if all(keep(*xyz[:, k]) for k in range(xyz.shape[1])):
             chosen.append(j)
     return faces[:, chosen]
 
 
-class ElasticBody:
-    """P1 displacement u on mesh, Lame data, the rigid-motion mass term."""
+def face_measure(xyz):
+    """Length (2D) or area (3D) of a face given by its vertex columns."""
+    if xyz.shape[0] == 2:
+        return float(np.hypot(*(xyz[:, 1] - xyz[:, 0])))
+    return 0.5 * float(np.linalg.norm(
+        np.cross(xyz[:, 1] - xyz[:, 0], xyz[:, 2] - xyz[:, 0])))
 
-    def __init__(self, mesh, E, nu):
-        self.mesh = mesh
-        self.mfu = gf.MeshFem(mesh, 2)
+
+class ElasticBody:
+    """P1 displacement `u` (or another name) on mesh, Lame data, and, for a
+    body held by contact only, the rigid-motion mass term. Several bodies
+    share one GetFEM model when `model` is given."""
+
+    def __init__(self, mesh, E, nu, model=None, name="u", held=False):
+        self.mesh, self.name = mesh, name
+        self.dim = mesh.dim()
+        self.mfu = gf.MeshFem(mesh, self.dim)
         self.mfu.set_classical_fem(1)
         self.mim = gf.MeshIm(mesh, 2)
-        self.md = gf.Model("real")
-        self.md.add_fem_variable("u", self.mfu)
+        self.md = model if model is not None else gf.Model("real")
+        self.md.add_fem_variable(name, self.mfu)
         lam, mu = lame(E, nu)
-        self.md.add_initialized_data("lambda", [lam])
-        self.md.add_initialized_data("mu", [mu])
+        self.md.add_initialized_data(f"lambda_{name}", [lam])
+        self.md.add_initialized_data(f"mu_{name}", [mu])
         self.md.add_isotropic_linearized_elasticity_brick(
-            self.mim, "u", "lambda", "mu")
-        self.md.add_initialized_data("eps", [1e-8])
-        self.md.add_mass_brick(self.mim, "u", "eps")
+            self.mim, name, f"lambda_{name}", f"mu_{name}")
+        if not held:
+            self.md.add_initialized_data(f"eps_{name}", [1e-8])
+            self.md.add_mass_brick(self.mim, name, f"eps_{name}")
 
     def symmetry(self, region):
-        """u_x = 0 on region (the symmetry axis x = 0), by multipliers."""
+        """Normal displacement zero on region (a symmetry plane), by
+        multipliers."""
         self.md.add_normal_Dirichlet_condition_with_multipliers(
-            self.mim, "u", 1, region)
+            self.mim, self.name, 1, region)
+
+    def fixed(self, region):
+        """u = 0 on region, by multipliers."""
+        self.md.add_Dirichlet_condition_with_multipliers(
+            self.mim, self.name, 1, region)
+
+    def traction(self, region, vector):
+        """A constant traction (MPa) on region."""
+        data = f"t_{self.name}_{region}"
+        self.md.add_initialized_data(data, list(vector))
+        self.md.add_source_term_brick(self.mim, self.name, data, region)
+
+    def point_force(self, point, component, value):
+        """A force on the component of the node nearest to point."""
+        nodes = self.mfu.basic_dof_nodes()
+        dist = sum((nodes[k] - point[k]) ** 2 for k in range(self.dim))
+        dofs = range(component, self.mfu.nbdof(), self.dim)
+        load = np.zeros(self.mfu.nbdof())
+        load[min(dofs, key=lambda d: dist[d])] = value
+        self.md.add_explicit_rhs(self.name, load)
+
+    def _multipliers(self, region, r, mu):
+        cdof = self.mfu.dof_on_region(region)
+        self.contact_dofs = cdof[1::self.dim]
+        self.contact_region = region
+        n = len(self.contact_dofs)
+        self.md.add_variable("lambda_n", n)
+        self.md.add_initialized_data("r", [r])
+        if mu > 0:
+            self.md.add_variable("lambda_t", n * (self.dim - 1))
+            self.md.add_initialized_data("friction", [mu])
+            return ["lambda_n", "lambda_t", "r", "friction"]
+        return ["lambda_n", "r"]
 
     def contact(self, region, r, mu=0.0):
         """Nodal Signorini contact on region with the plane y = 0 (signed
         distance y), augmentation r (MPa); with mu > 0, Coulomb friction
         (static: the tangential multipliers against the total tangential
         displacement, the one-step problem dpana solves)."""
+        names = self._multipliers(region, r, mu)
+        self.md.add_nodal_contact_with_rigid_obstacle_brick(
+            self.mim, self.name, *names, region, "y", 1)
+
+    def contact_with(self, other, region, other_region, r, mu=0.0):
+        """Nodal contact of this body's nodes on region (the slave side)
+        with the faces of other on other_region (the master side), by
+        GetFEM's brick for non-matching meshes (the slave nodes are
+        projected on the master faces), which makes its multipliers itself.
+        With friction, GetFEM 5.4's interface reads the name of the
+        tangential multiplier twice for two displacement variables (given
+        once, it takes the next names one place off and Newton fails);
+        checked: with E2 = 1000 E1 it reproduces the rigid plane."""
         cdof = self.mfu.dof_on_region(region)
-        self.contact_dofs = cdof[1::2]
-        self.md.add_variable("lambda_n", len(self.contact_dofs))
-        self.md.add_initialized_data("r", [r])
-        if mu > 0:
-            self.md.add_variable("lambda_t", len(self.contact_dofs))
-            self.md.add_initialized_data("friction", [mu])
-            self.md.add_nodal_contact_with_rigid_obstacle_brick(
-                self.mim, "u", "lambda_n", "lambda_t", "r", "friction",
-                region, "y", 1)
-        else:
-            self.md.add_nodal_contact_with_rigid_obstacle_brick(
-                self.mim, "u", "lambda_n", "r", region, "y", 1)
+        self.contact_dofs = cdof[1::self.dim]
         self.contact_region = region
+        self.md.add_initialized_data("r", [r])
+        names = ["lambda_n", "r"]
+        if mu > 0:
+            self.md.add_initialized_data("friction", [mu])
+            names = ["lambda_n", "lambda_t", "lambda_t", "r", "friction"]
+        self.md.add_nodal_contact_between_nonmatching_meshes_brick(
+            self.mim, other.mim, self.name, other.name, *names, region,
+            other_region)
 
     def solve(self, residual, max_iter=100):
         nit, converged = self.md.solve("max_res", residual, "max_iter",
                                        max_iter, "lsearch", "default")
         return int(nit), bool(converged)
 
+    def record(self, nit, converged, dofs=None, **extra):
+        """The record of a solved level: sizes, Newton iterations, extra
+        entries and the quantities of pressure_quantities()."""
+        record = {"dofs": int(self.mfu.nbdof() if dofs is None else dofs),
+                  "contact_unknowns": len(self.contact_dofs),
+                  "iterations": nit, "converged": converged, **extra}
+        record.update(pressure_quantities(*self.nodal_pressures()))
+        return record
+
     def nodal_pressures(self):
-        """Contact nodes sorted by x: x, nodal force F >= 0 (N/mm) and the
-        pressure p = F / (half the length of the adjacent contact faces)."""
+        """Contact nodes (coordinates, dim x n), the nodal force F >= 0 (N/mm
+        in 2D, N in 3D) and the pressure p = F / (the tributary length or
+        area: half of each adjacent contact face in 2D, a third in 3D)."""
         lam = np.asarray(self.md.variable("lambda_n")).ravel()
         nodes = self.mfu.basic_dof_nodes(self.contact_dofs)
         faces = self.mesh.region(self.contact_region)
         tributary = {}
         for j in range(faces.shape[1]):
-            pts = self.mesh.pid_in_faces(faces[:, j:j + 1])
-            xy = self.mesh.pts(pts)
-            half = 0.5 * np.hypot(*(xy[:, 1] - xy[:, 0]))
-            for k in range(2):
-                key = (round(xy[0, k], 9), round(xy[1, k], 9))
-                tributary[key] = tributary.get(key, 0.0) + half
-        trib = np.array([tributary[(round(x, 9), round(y, 9))]
-                         for x, y in nodes.T])
+            xyz = self.mesh.pts(self.mesh.pid_in_faces(faces[:, j:j + 1]))
+            share = face_measure(xyz) / xyz.shape[1]
+            for k in range(xyz.shape[1]):
+                key = tuple(round(c, 9) for c in xyz[:, k])
+                tributary[key] = tributary.get(key, 0.0) + share
+        trib = np.array([tributary[tuple(round(c, 9) for c in node)]
+                         for node in nodes.T])
         force = np.abs(lam)
-        order = np.argsort(nodes[0])
-        return nodes[0][order], force[order], (force / trib)[order]
+        return nodes, force, force / trib
 
 
-def pressure_quantities(x, force, p):
-    """N_max, N_first (the node on the axis), the resultant, the half width
-    at node resolution (last node that carries a force) and the moment
-    estimate a_m = 2 sqrt(sum F x^2 / sum F)."""
+def pressure_quantities(nodes, force, p):
+    """From the contact nodes: N_max, N_first (the node nearest the origin,
+    on the symmetry axis), the resultant, the half width at node
+    resolution (the farthest node that carries a force, in x in 2D, in
+    r = (x^2 + z^2)^1/2 in 3D), the moment estimate (2D: a_m = 2 (sum F x^2
+    / sum F)^1/2, with x_p = sum F x / sum F; 3D: a_m = (5/2 sum F r^2 /
+    sum F)^1/2), each exact for the elliptic Hertz law."""
     total = force.sum()
-    active = np.nonzero(force > 1e-12 * total)[0]
-    return {
-        "N_max": float(p.max()),
-        "N_first": float(p[0]),
-        "resultant": float(total),
-        "a": float(x[active[-1]]),
-        "a_m": float(2 * np.sqrt((force * x * x).sum() / total)),
-        "x_p": float((force * x).sum() / total),
-    }
+    r = np.abs(nodes[0]) if len(nodes) == 2 else np.hypot(nodes[0], nodes[2])
+    active = force > 1e-12 * total
+    q = {"N_max": float(p.max()),
+         "N_first": float(p[np.argmin(np.hypot(r, nodes[1]))]),
+         "resultant": float(total),
+         "a": float(r[active].max())}
+    moment = (force * r * r).sum() / total
+    if len(nodes) == 2:
+        q["a_m"] = float(2 * np.sqrt(moment))
+        q["x_p"] = float((force * r).sum() / total)
+    else:
+        q["a_m"] = float(np.sqrt(2.5 * moment))
+    return q
+
+
+def emit(record, start):
+    """Adds the time since start (the GetFEM work: mesh import, assembly,
+    solve and post-processing) and prints the record as one JSON line."""
+    record["solve_time"] = time.perf_counter() - start
+    json.dump(record, sys.stdout)
+    print()

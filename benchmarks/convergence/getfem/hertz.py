@@ -9,6 +9,14 @@ Level L: element size h_c = (pi R / 4) / 2^(L + 5) within 14 mm of the
 contact point (the boundary chord of dpana's quarter disc with L global
 and 5 contact refinements), growing to 32 h_c (at most R/4) at 28 mm.
 Candidate contact nodes: the arc within x <= 15 mm.
+  --ratio E1/E2   instead of the rigid plane, the elastic foundation of
+                  prm/hertz_ratio_*: [0, 80] x [-80, 0] (symmetry on x = 0,
+                  fixed at its base), meshed by gmsh with the same size
+                  field around the contact point as the body (whose
+                  refinement radius becomes dpana's 17 mm there);
+                  GetFEM's nodal brick between non-matching meshes, the
+                  arc x <= 16 mm the slave side, the foundation's top
+                  x <= 20 mm the master side.
 
 Prints one JSON record: sizes, Newton iterations, the time of the GetFEM
 work (mesh import, assembly and solve; the gmsh meshing is timed apart)
@@ -16,17 +24,55 @@ and the quantities of pressure_quantities().
 """
 
 import argparse
-import json
 import math
-import sys
 import tempfile
 import time
 
-from contact_model import ElasticBody, boundary_faces, pressure_quantities
+from contact_model import ElasticBody, boundary_faces, emit
 from mesh import hertz_mesh
 
 R, E, NU, P = 40.0, 130000.0, 0.2, 200000.0
-CONTACT, AXIS = 10, 11
+CONTACT, AXIS, F_TOP, F_LEFT, F_BASE = 10, 11, 20, 21, 22
+
+
+def foundation(gf, msh):
+    """The elastic block below the contact point and its regions."""
+    mesh = gf.Mesh("import", "gmsh", msh)
+    mesh.set_region(F_TOP, boundary_faces(
+        mesh, lambda x, y: abs(y) < 1e-9 and x <= 20 + 1e-9))
+    mesh.set_region(F_LEFT, boundary_faces(mesh, lambda x, y: abs(x) < 1e-9))
+    mesh.set_region(F_BASE, boundary_faces(
+        mesh, lambda x, y: abs(y + 2 * R) < 1e-9))
+    return mesh
+
+
+def solve(gf, msh, ratio, args):
+    """Builds and solves the model; returns the body and its record."""
+    mesh = gf.Mesh("import", "gmsh", msh[0])
+    width = 15 if ratio is None else 16
+    mesh.set_region(CONTACT, boundary_faces(
+        mesh, lambda x, y: x <= width + 1e-9 and y < R
+        and abs(math.hypot(x, y - R) - R) < 1e-6 * R))
+    mesh.set_region(AXIS, boundary_faces(mesh, lambda x, y: abs(x) < 1e-9))
+    body = ElasticBody(mesh, E, NU)
+    body.symmetry(AXIS)
+    dofs = body.mfu.nbdof()
+    if ratio is None:
+        body.contact(CONTACT, E)
+    else:
+        base = ElasticBody(foundation(gf, msh[1]), E / ratio, NU,
+                           model=body.md, name="v", held=True)
+        base.symmetry(F_LEFT)
+        base.fixed(F_BASE)
+        body.contact_with(base, CONTACT, F_TOP, min(E, E / ratio))
+        dofs += base.mfu.nbdof()
+    pole = (0.0, 2 * R) if args.body == "circle" else (0.0, R)
+    body.point_force(pole, 1, -P / 2)
+    # Residual 1e-8 of the load: answers and Newton iterations are the same
+    # as with 1e-11 of it (checked on levels 2 and 3); 1e-14 of it is below
+    # the round-off floor and does not converge.
+    nit, converged = body.solve(1e-8 * P)
+    return body.record(nit, converged, dofs)
 
 
 def main():
@@ -34,45 +80,30 @@ def main():
     parser.add_argument("--body", choices=("circle", "dshape"),
                         default="circle")
     parser.add_argument("--level", type=int, required=True)
+    parser.add_argument("--ratio", type=float, default=None,
+                        help="E1/E2 of an elastic foundation (default: "
+                        "the rigid plane)")
     args = parser.parse_args()
     hc = (math.pi * R / 4) / 2 ** (args.level + 5)
+    rho = 14.0 if args.ratio is None else 17.0
     with tempfile.TemporaryDirectory(prefix="getfem_hertz_") as tmp:
         start = time.perf_counter()
-        msh = hertz_mesh(args.body, R, hc, min(32 * hc, R / 4), 14.0, tmp)
+        msh = [hertz_mesh(args.body, R, hc, min(32 * hc, R / 4), rho, tmp)]
+        if args.ratio is not None:
+            msh.append(hertz_mesh("block", R, hc, min(32 * hc, R / 4), rho,
+                                  tmp))
         meshing = time.perf_counter() - start
         import getfem as gf
         start = time.perf_counter()
-        mesh = gf.Mesh("import", "gmsh", msh)
-    mesh.set_region(CONTACT, boundary_faces(
-        mesh, lambda x, y: x <= 15 + 1e-9 and y < R
-        and abs(math.hypot(x, y - R) - R) < 1e-6 * R))
-    mesh.set_region(AXIS, boundary_faces(mesh, lambda x, y: abs(x) < 1e-9))
-    body = ElasticBody(mesh, E, NU)
-    body.symmetry(AXIS)
-    body.contact(CONTACT, E)
-    pole = (0.0, 2 * R) if args.body == "circle" else (0.0, R)
-    nodes = body.mfu.basic_dof_nodes()
-    dist = (nodes[0] - pole[0]) ** 2 + (nodes[1] - pole[1]) ** 2
-    ydof = [d for d in range(body.mfu.nbdof()) if d % 2 == 1]
-    load = [0.0] * body.mfu.nbdof()
-    load[min(ydof, key=lambda d: dist[d])] = -P / 2
-    body.md.add_explicit_rhs("u", load)
-    # Residual 1e-8 of the load: answers and Newton iterations are the same
-    # as with 1e-11 of it (checked on levels 2 and 3); 1e-14 of it is below
-    # the round-off floor and does not converge.
-    nit, converged = body.solve(1e-8 * P)
-    record = {"dofs": int(body.mfu.nbdof()),
-              "contact_unknowns": len(body.contact_dofs),
-              "iterations": nit, "converged": converged,
-              "h_c": hc}
-    record.update(pressure_quantities(*body.nodal_pressures()))
-    record["solve_time"] = time.perf_counter() - start
-    # Plane Hertz: a = sqrt(4 P R (1 - nu^2) / (pi E)), p0 = 2 P / (pi a).
-    a = math.sqrt(4 * P * R * (1 - NU * NU) / (math.pi * E))
+        record = solve(gf, msh, args.ratio, args)
+    record["h_c"] = hc
+    # Plane Hertz: a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a), with
+    # 1/E* = (1 - nu^2) (1/E1 + 1/E2).
+    inv = (1 - NU * NU) / E * (1 + (args.ratio or 0.0))
+    a = math.sqrt(4 * P * R * inv / math.pi)
     record["hertz"] = {"a": a, "N_max": 2 * P / (math.pi * a)}
     record["meshing_time"] = meshing
-    json.dump(record, sys.stdout)
-    print()
+    emit(record, start)
 
 
 if __name__ == "__main__":

@@ -5,8 +5,11 @@ point (0, 0) touches the plane y = 0 (centre (0, R)):
   circle  the half of the full circular body, the body of the reference
           formulation; its edge on the axis runs from (0, 0) to (0, 2R);
   dshape  the lower half of that half, the quarter disc below the centre
-          (the body of dpana's hertz_* scenes); its edges are the axis
-          (0, 0)-(0, R) and the flat side y = R.
+          (the body of dpana's hertz_rigid_mu0_d_shaped scene); its edges
+          are the axis (0, 0)-(0, R) and the flat side y = R.
+And the elastic foundation of the two-body Hertz scenes:
+  block   the square [0, 2R] x [-2R, 0] below the contact point (the half
+          of the 4R x 2R foundation).
 Element size h_c within the distance rho of the contact point, growing
 linearly to h_far at the distance 2 rho (gmsh Distance and Threshold
 fields), P1 triangles.
@@ -48,6 +51,16 @@ Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Physical Surface(1) = {1};""",
     # arc (0,0)-(R,R), flat side (R,R)-(0,R), axis (0,R)-(0,0)
+    "block": """Point(5) = {2 * R, 0, 0};
+Point(6) = {2 * R, -2 * R, 0};
+Point(7) = {0, -2 * R, 0};
+Line(2) = {1, 5};
+Line(3) = {5, 6};
+Line(4) = {6, 7};
+Line(5) = {7, 1};
+Curve Loop(1) = {2, 3, 4, 5};
+Plane Surface(1) = {1};
+Physical Surface(1) = {1};""",
     "dshape": """Line(2) = {3, 2};
 Line(4) = {2, 1};
 Curve Loop(1) = {1, 2, 4};
@@ -59,7 +72,7 @@ Physical Surface(1) = {1};""",
 def hertz_mesh(body, radius, hc, hfar, rho, directory):
     """Writes and meshes the .geo of body; returns the path of the .msh."""
     if body not in OUTLINES:
-        raise ValueError(f"unknown body '{body}' (circle, dshape)")
+        raise ValueError(f"unknown body '{body}' (circle, dshape, block)")
     geo = os.path.join(directory, f"{body}.geo")
     msh = os.path.join(directory, f"{body}.msh")
     with open(geo, "w") as f:

@@ -13,27 +13,19 @@ max |p - 50| / 50 over the contact nodes.
 """
 
 import argparse
-import json
-import sys
 import time
 
 import numpy as np
 
-from contact_model import ElasticBody, boundary_faces, pressure_quantities
+from contact_model import ElasticBody, boundary_faces, emit
 
 L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
 BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--level", type=int, required=True)
-    parser.add_argument("--mu", type=float, default=0.0,
-                        help="friction coefficient (receding_2d_mu1: 1)")
-    args = parser.parse_args()
-    n = 4 * 2 ** args.level
-    import getfem as gf
-    start = time.perf_counter()
+def loaded_block(gf, n, nu=NU):
+    """The half block on n x n squares of two P1 triangles, with its
+    symmetry condition and loads (its base is the region BOTTOM)."""
     grid = np.linspace(0.0, L, n + 1)
     mesh = gf.Mesh("regular simplices", grid, grid)
     tol = 1e-9 * L
@@ -41,27 +33,35 @@ def main():
     mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y: x < tol))
     mesh.set_region(UPPER, boundary_faces(mesh, lambda x, y: y > L - tol))
     mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
-    body = ElasticBody(mesh, E, NU)
+    body = ElasticBody(mesh, E, nu)
     body.symmetry(LEFT)
-    body.md.add_initialized_data("top", [0.0, -TOP])
-    body.md.add_source_term_brick(body.mim, "u", "top", UPPER)
-    body.md.add_initialized_data("side", [-SIDE, 0.0])
-    body.md.add_source_term_brick(body.mim, "u", "side", RIGHT)
+    body.traction(UPPER, [0.0, -TOP])
+    body.traction(RIGHT, [-SIDE, 0.0])
+    return body
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--level", type=int, required=True)
+    parser.add_argument("--mu", type=float, default=0.0,
+                        help="friction coefficient (receding_2d_mu1: 1)")
+    parser.add_argument("--nu", type=float, default=NU,
+                        help="Poisson's ratio (receding_2d_nu0_mu1: 0)")
+    args = parser.parse_args()
+    n = 4 * 2 ** args.level
+    import getfem as gf
+    start = time.perf_counter()
+    body = loaded_block(gf, n, args.nu)
     body.contact(BOTTOM, E, args.mu)
     # GetFEM's residual divides the rows of the contact conditions by r:
     # with friction, a tolerance of 1e-8 of the load let Newton stop on a
     # wrong active set (tensile multipliers of up to 4 N at n = 64); 1e-10
     # of the load converges on the right one, above the round-off floor.
     nit, converged = body.solve(1e-10 * TOP * L)
-    x, force, p = body.nodal_pressures()
-    record = {"dofs": int(body.mfu.nbdof()),
-              "contact_unknowns": len(body.contact_dofs),
-              "iterations": nit, "converged": converged, "n": n}
-    record.update(pressure_quantities(x, force, p))
+    record = body.record(nit, converged, n=n)
+    p = body.nodal_pressures()[2]
     record["uniform_error"] = float(np.abs(p - TOP).max() / TOP)
-    record["solve_time"] = time.perf_counter() - start
-    json.dump(record, sys.stdout)
-    print()
+    emit(record, start)
 
 
 if __name__ == "__main__":

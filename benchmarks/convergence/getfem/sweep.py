@@ -6,10 +6,19 @@ dpana sweep (code "getfem").
 Families (each compared with the dpana family of the same name,
 families.py):
   hertz_rigid_mu0           hertz.py --body circle (the circular body)
+  hertz_rigid_mu0_r10       the same (paired with dpana's disc refined
+                            within 10 mm instead of 14)
   hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
                             the centre)
   receding_2d_mu0           receding.py
   receding_2d_mu1           receding.py --mu 1
+  two_body_ratio_1, _1e-3, _1e3
+                            two_body.py --ratio 1, 1e-3, 1e3 (the block on
+                            the elastic foundation, mu = 1)
+  hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
+                            body on the elastic block, equal moduli)
+  receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
+  hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
 
   sweep.py --out results [--full] [--repeat N] [FAMILY ...]
 """
@@ -23,17 +32,36 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 import records as records_io  # noqa: E402  (benchmarks/convergence/)
-# family: (script arguments, default levels, extra levels of --full)
+# family: (script arguments, default levels, extra levels of --full).
+# The default levels stop where a GetFEM level takes about a minute on the
+# loaded 2-core machine (the two-body brick between non-matching meshes
+# grows about eightfold per level, the 3D levels fourfold).
 FAMILIES = {
     "hertz_rigid_mu0": (["hertz.py", "--body", "circle"], range(-2, 5),
                         [5]),
+    # The same GetFEM sweep, paired with dpana's leaner disc mesh.
+    "hertz_rigid_mu0_r10": (["hertz.py", "--body", "circle"], range(-2, 5),
+                            [5]),
     "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
                                  range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
     "receding_2d_mu1": (["receding.py", "--mu", "1"], range(0, 6), [6]),
+    "two_body_ratio_1": (["two_body.py", "--ratio", "1"], range(0, 5), [5]),
+    "two_body_ratio_1e-3": (["two_body.py", "--ratio", "1e-3"], range(0, 5),
+                            [5]),
+    "two_body_ratio_1e3": (["two_body.py", "--ratio", "1e3"], range(0, 5),
+                           [5]),
+    "hertz_ratio_1_mu0": (["hertz.py", "--body", "circle", "--ratio", "1"],
+                          range(0, 4), [4]),
+    "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
+    "hertz_sphere_rigid": (["sphere.py"], range(0, 4), [4]),
 }
+# h of a level, in the units of the dpana family (families.py).
 H = {"hertz.py": lambda level: 2.0 ** -level,
-     "receding.py": lambda level: 40.0 / (4 * 2 ** level)}
+     "receding.py": lambda level: 40.0 / (4 * 2 ** level),
+     "two_body.py": lambda level: 40.0 / (4 * 2 ** level),
+     "receding_3d.py": lambda level: 40.0 / [4, 8, 12, 16, 24, 32][level],
+     "sphere.py": lambda level: 2.0 ** (-level / 2)}
 
 
 def run_level(python, args, level, timeout):

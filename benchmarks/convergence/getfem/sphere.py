@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""GetFEM harness: the 3D Hertz sphere of prm/hertz_sphere_rigid.prm. The
+quarter x >= 0, z >= 0 of an elastic sphere R = 40 mm (E = 130000 MPa,
+nu = 0.2) touching the rigid plane y = 0 at the origin, loaded by P/4 =
+75 kN at its far pole (0, 2R, 0), frictionless. The mesh is dpana's: the
+gmsh mesh of scripts/meshes/make_sphere.py --level L (P1 tetrahedra, made
+once into the sweep's cache directory and not timed), imported with its
+physical groups: symmetry_x (1) and symmetry_z (2) carry the normal
+symmetry conditions, the cap `contact` (3, r <= 6 mm) the candidate nodes.
+3D Hertz: a = (3 P R / (4 E*))^(1/3) = 4.050 mm, p0 = 3 P / (2 pi a^2) =
+8730 MPa, 1/E* = (1 - nu^2) / E.
+
+Prints one JSON record (see hertz.py).
+"""
+
+import argparse
+import math
+import os
+import sys
+import time
+
+from contact_model import ElasticBody, emit
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from families import SphereMesh  # noqa: E402  (benchmarks/convergence/)
+
+R, E, NU, P = 40.0, 130000.0, 0.2, 300000.0
+SYM_X, SYM_Z, CONTACT = 1, 2, 3
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--level", type=int, required=True)
+    args = parser.parse_args()
+    start = time.perf_counter()
+    msh = SphereMesh(args.level).path(
+        os.path.join(HERE, "..", "..", "..", "prm"))
+    meshing = time.perf_counter() - start
+    import getfem as gf
+    start = time.perf_counter()
+    mesh = gf.Mesh("import", "gmsh", msh)
+    body = ElasticBody(mesh, E, NU)
+    body.symmetry(SYM_X)
+    body.symmetry(SYM_Z)
+    body.contact(CONTACT, E)
+    body.point_force((0.0, 2 * R, 0.0), 1, -P / 4)
+    # 1e-10 of the load: at level 3, 1e-12 of it is below the round-off
+    # floor (100 iterations without convergence, the answers to 7 digits
+    # those of 1e-10, reached in 10 iterations).
+    nit, converged = body.solve(1e-10 * P)
+    a = (3 * P * R * (1 - NU * NU) / (4 * E)) ** (1 / 3)
+    emit(body.record(nit, converged, meshing_time=meshing, hertz={
+        "a": a, "N_max": 3 * P / (2 * math.pi * a * a)}), start)
+
+
+if __name__ == "__main__":
+    main()
