@@ -103,8 +103,8 @@ namespace
   {
     double       t_factor = 0, t_condense = 0, peak_mb = 0;
     unsigned int n_gamma = 0;
-    // CHOLMOD's analysis: nnz(L), stored numbers, flops.
-    double lnz = 0, entries = 0, flops = 0;
+    // CHOLMOD's analysis: nnz(L), stored numbers and row indices, flops.
+    double lnz = 0, entries = 0, indices = 0, flops = 0;
   };
 
   struct Row
@@ -218,6 +218,7 @@ namespace
             m.n_gamma = c.schur_factorization().schur_dofs().size();
             m.lnz     = c.factorization().analysis().factor_nonzeros;
             m.entries = c.factorization().analysis().factor_entries;
+            m.indices = c.factorization().analysis().factor_indices;
             m.flops   = c.factorization().analysis().factor_flops;
             if (k + 1 == repeats)
               {
@@ -420,7 +421,8 @@ namespace
     out << "scene,body,n_dofs,n_contact,n_gamma,setup_mb,"
            "blocked_factor,blocked_condense,blocked_peak_mb,"
            "schur_factor,schur_condense,schur_peak_mb,difference,"
-           "mumps_factor,mumps_condense,mumps_peak_mb,mumps_difference\n";
+           "mumps_factor,mumps_condense,mumps_peak_mb,mumps_difference,"
+           "schur_factor_mb\n";
     out.precision(6);
     for (const Row &r : rows)
       out << r.label << ',' << r.body << ',' << r.n_dofs << ',' << r.n_contact
@@ -429,7 +431,8 @@ namespace
           << r.blocked.peak_mb << ',' << r.schur.t_factor << ','
           << r.schur.t_condense << ',' << r.schur.peak_mb << ',' << r.difference
           << ',' << r.mumps.t_factor << ',' << r.mumps.t_condense << ','
-          << r.mumps.peak_mb << ',' << r.difference_mumps << '\n';
+          << r.mumps.peak_mb << ',' << r.difference_mumps << ','
+          << 8e-6 * (r.schur.entries + r.schur.indices) << '\n';
   }
 
 
@@ -492,7 +495,7 @@ main(int argc, char **argv)
   std::string              prm_dir   = "prm";
   unsigned int             repeats   = 1;
   bool                     orderings = false, analysis_only = false;
-  std::vector<std::string> boxes;
+  std::vector<std::string> boxes, only;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -504,6 +507,8 @@ main(int argc, char **argv)
         analysis_only = orderings = true;
       else if (arg == "--box" && i + 1 < argc)
         boxes.push_back(argv[++i]);
+      else if (arg == "--only" && i + 1 < argc)
+        only.push_back(argv[++i]);
       else if (arg == "--csv" && i + 1 < argc)
         csv = argv[++i];
       else if (arg == "--prm-dir" && i + 1 < argc)
@@ -515,6 +520,7 @@ main(int argc, char **argv)
           std::cerr << "condensation_benchmark: error: bad argument '" << arg
                     << "' (usage: condensation_benchmark [--quick | --full] "
                        "[--orderings | --analysis-only] [--box 'M, H, M' ...] "
+                       "[--only TEXT ...] "
                        "[--prm-dir DIR] [--csv FILE] [--repeats N])"
                     << std::endl;
           return 1;
@@ -561,6 +567,12 @@ main(int argc, char **argv)
       print_header();
       for (const Case &c : cases(mode, prm_dir, boxes))
         {
+          // --only: the cases whose label contains one of the texts.
+          if (!only.empty() &&
+              std::none_of(only.begin(), only.end(), [&](const auto &text) {
+                return c.label.find(text) != std::string::npos;
+              }))
+            continue;
           const auto outline = parameters::scan_file(c.file);
           const auto part    = outline.dimension == 2 ?
                                  run_case<2>(c, outline, repeats) :
