@@ -57,6 +57,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -268,7 +269,8 @@ namespace
   std::vector<Row>
   run_case(const Case                    &c,
            const parameters::FileOutline &outline,
-           const unsigned int             repeats)
+           const unsigned int             repeats,
+           const bool                     schur_only)
   {
     auto s = make_scene<dim>(c.file, outline, c.entries);
     s->assemble();
@@ -285,8 +287,16 @@ namespace
           "/tmp/condensation_benchmark_" + std::to_string(getpid());
         condensation::Parameters blocked, schur;
         blocked.method = condensation::Method::blocked_solves;
-        row.blocked    = measure(*s, b, blocked, repeats, file + "_blocked");
         row.schur      = measure(*s, b, schur, repeats, file + "_schur");
+        if (schur_only)
+          {
+            // --schur-only: the other routes are not run (their columns 0).
+            row.n_contact  = read_matrix(file + "_schur").rows();
+            row.difference = row.difference_mumps = std::nan("");
+            rows.push_back(row);
+            continue;
+          }
+        row.blocked = measure(*s, b, blocked, repeats, file + "_blocked");
         condensation::Parameters mumps = schur;
         mumps.backend                  = condensation::Backend::mumps;
         row.mumps = measure(*s, b, mumps, repeats, file + "_mumps");
@@ -490,11 +500,11 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  std::string              mode      = "default";
-  std::string              csv       = "results.csv";
-  std::string              prm_dir   = "prm";
-  unsigned int             repeats   = 1;
-  bool                     orderings = false, analysis_only = false;
+  std::string  mode      = "default";
+  std::string  csv       = "results.csv";
+  std::string  prm_dir   = "prm";
+  unsigned int repeats   = 1;
+  bool         orderings = false, analysis_only = false, schur_only = false;
   std::vector<std::string> boxes, only;
   for (int i = 1; i < argc; ++i)
     {
@@ -507,6 +517,8 @@ main(int argc, char **argv)
         analysis_only = orderings = true;
       else if (arg == "--box" && i + 1 < argc)
         boxes.push_back(argv[++i]);
+      else if (arg == "--schur-only")
+        schur_only = true;
       else if (arg == "--only" && i + 1 < argc)
         only.push_back(argv[++i]);
       else if (arg == "--csv" && i + 1 < argc)
@@ -520,7 +532,7 @@ main(int argc, char **argv)
           std::cerr << "condensation_benchmark: error: bad argument '" << arg
                     << "' (usage: condensation_benchmark [--quick | --full] "
                        "[--orderings | --analysis-only] [--box 'M, H, M' ...] "
-                       "[--only TEXT ...] "
+                       "[--only TEXT ...] [--schur-only] "
                        "[--prm-dir DIR] [--csv FILE] [--repeats N])"
                     << std::endl;
           return 1;
@@ -575,8 +587,8 @@ main(int argc, char **argv)
             continue;
           const auto outline = parameters::scan_file(c.file);
           const auto part    = outline.dimension == 2 ?
-                                 run_case<2>(c, outline, repeats) :
-                                 run_case<3>(c, outline, repeats);
+                                 run_case<2>(c, outline, repeats, schur_only) :
+                                 run_case<3>(c, outline, repeats, schur_only);
           for (const Row &r : part)
             {
               print_row(r);

@@ -33,9 +33,17 @@ def run(dpana, prm, workdir):
     name = os.path.basename(prm)
     text = open(prm).read()
     open(os.path.join(workdir, name), "w").write(text)
-    if "# mesh:" in text and not os.path.exists(os.path.join(workdir,
-                                                             "meshes")):
-        subprocess.check_call([sys.executable, MESHES, name], cwd=workdir)
+    # A generated mesh is made once, in the scene's folder, and shared by
+    # both executables (gmsh's parallel mesher may differ from run to run).
+    if "# mesh:" in text:
+        scene_dir = os.path.dirname(os.path.abspath(workdir))
+        if not os.path.exists(os.path.join(scene_dir, "meshes")):
+            shutil.copy(prm, scene_dir)
+            subprocess.check_call([sys.executable, MESHES, name],
+                                  cwd=scene_dir)
+        if not os.path.exists(os.path.join(workdir, "meshes")):
+            os.symlink(os.path.join(scene_dir, "meshes"),
+                       os.path.join(workdir, "meshes"))
     out = [d for d in os.listdir(workdir) if d.startswith("output")]
     for d in out:
         shutil.rmtree(os.path.join(workdir, d))
