@@ -487,7 +487,7 @@ namespace
     for (const unsigned int k : hertz)
       result.push_back({"hertz_rigid_mu0 ref " + std::to_string(k),
                         prm_dir + "/hertz_rigid_mu0.prm",
-                        {"Body 1/Geometry/Quarter disc/Contact refinements=" +
+                        {"Body 1/Geometry/Right half disc/Contact refinements=" +
                          std::to_string(k)}});
     return result;
   }
