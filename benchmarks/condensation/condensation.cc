@@ -485,10 +485,11 @@ namespace
                           {"Body 1/Geometry/Box/Subdivisions=" + sub}});
       }
     for (const unsigned int k : hertz)
-      result.push_back({"hertz_rigid_mu0 ref " + std::to_string(k),
-                        prm_dir + "/hertz_rigid_mu0.prm",
-                        {"Body 1/Geometry/Right half disc/Contact refinements=" +
-                         std::to_string(k)}});
+      result.push_back(
+        {"hertz_rigid_mu0 ref " + std::to_string(k),
+         prm_dir + "/hertz_rigid_mu0.prm",
+         {"Body 1/Geometry/Right half disc/Contact refinements=" +
+          std::to_string(k)}});
     return result;
   }
 } // namespace
