@@ -57,6 +57,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -103,8 +104,8 @@ namespace
   {
     double       t_factor = 0, t_condense = 0, peak_mb = 0;
     unsigned int n_gamma = 0;
-    // CHOLMOD's analysis: nnz(L), stored numbers, flops.
-    double lnz = 0, entries = 0, flops = 0;
+    // CHOLMOD's analysis: nnz(L), stored numbers and row indices, flops.
+    double lnz = 0, entries = 0, indices = 0, flops = 0;
   };
 
   struct Row
@@ -218,6 +219,7 @@ namespace
             m.n_gamma = c.schur_factorization().schur_dofs().size();
             m.lnz     = c.factorization().analysis().factor_nonzeros;
             m.entries = c.factorization().analysis().factor_entries;
+            m.indices = c.factorization().analysis().factor_indices;
             m.flops   = c.factorization().analysis().factor_flops;
             if (k + 1 == repeats)
               {
@@ -267,7 +269,8 @@ namespace
   std::vector<Row>
   run_case(const Case                    &c,
            const parameters::FileOutline &outline,
-           const unsigned int             repeats)
+           const unsigned int             repeats,
+           const bool                     schur_only)
   {
     auto s = make_scene<dim>(c.file, outline, c.entries);
     s->assemble();
@@ -284,8 +287,16 @@ namespace
           "/tmp/condensation_benchmark_" + std::to_string(getpid());
         condensation::Parameters blocked, schur;
         blocked.method = condensation::Method::blocked_solves;
-        row.blocked    = measure(*s, b, blocked, repeats, file + "_blocked");
         row.schur      = measure(*s, b, schur, repeats, file + "_schur");
+        if (schur_only)
+          {
+            // --schur-only: the other routes are not run (their columns 0).
+            row.n_contact  = read_matrix(file + "_schur").rows();
+            row.difference = row.difference_mumps = std::nan("");
+            rows.push_back(row);
+            continue;
+          }
+        row.blocked = measure(*s, b, blocked, repeats, file + "_blocked");
         condensation::Parameters mumps = schur;
         mumps.backend                  = condensation::Backend::mumps;
         row.mumps = measure(*s, b, mumps, repeats, file + "_mumps");
@@ -420,7 +431,8 @@ namespace
     out << "scene,body,n_dofs,n_contact,n_gamma,setup_mb,"
            "blocked_factor,blocked_condense,blocked_peak_mb,"
            "schur_factor,schur_condense,schur_peak_mb,difference,"
-           "mumps_factor,mumps_condense,mumps_peak_mb,mumps_difference\n";
+           "mumps_factor,mumps_condense,mumps_peak_mb,mumps_difference,"
+           "schur_factor_mb\n";
     out.precision(6);
     for (const Row &r : rows)
       out << r.label << ',' << r.body << ',' << r.n_dofs << ',' << r.n_contact
@@ -429,7 +441,8 @@ namespace
           << r.blocked.peak_mb << ',' << r.schur.t_factor << ','
           << r.schur.t_condense << ',' << r.schur.peak_mb << ',' << r.difference
           << ',' << r.mumps.t_factor << ',' << r.mumps.t_condense << ','
-          << r.mumps.peak_mb << ',' << r.difference_mumps << '\n';
+          << r.mumps.peak_mb << ',' << r.difference_mumps << ','
+          << 8e-6 * (r.schur.entries + r.schur.indices) << '\n';
   }
 
 
@@ -472,10 +485,11 @@ namespace
                           {"Body 1/Geometry/Box/Subdivisions=" + sub}});
       }
     for (const unsigned int k : hertz)
-      result.push_back({"hertz_rigid_mu0 ref " + std::to_string(k),
-                        prm_dir + "/hertz_rigid_mu0.prm",
-                        {"Body 1/Geometry/Quarter disc/Contact refinements=" +
-                         std::to_string(k)}});
+      result.push_back(
+        {"hertz_rigid_mu0 ref " + std::to_string(k),
+         prm_dir + "/hertz_rigid_mu0.prm",
+         {"Body 1/Geometry/Right half disc/Contact refinements=" +
+          std::to_string(k)}});
     return result;
   }
 } // namespace
@@ -487,12 +501,12 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  std::string              mode      = "default";
-  std::string              csv       = "results.csv";
-  std::string              prm_dir   = "prm";
-  unsigned int             repeats   = 1;
-  bool                     orderings = false, analysis_only = false;
-  std::vector<std::string> boxes;
+  std::string  mode      = "default";
+  std::string  csv       = "results.csv";
+  std::string  prm_dir   = "prm";
+  unsigned int repeats   = 1;
+  bool         orderings = false, analysis_only = false, schur_only = false;
+  std::vector<std::string> boxes, only;
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -504,6 +518,10 @@ main(int argc, char **argv)
         analysis_only = orderings = true;
       else if (arg == "--box" && i + 1 < argc)
         boxes.push_back(argv[++i]);
+      else if (arg == "--schur-only")
+        schur_only = true;
+      else if (arg == "--only" && i + 1 < argc)
+        only.push_back(argv[++i]);
       else if (arg == "--csv" && i + 1 < argc)
         csv = argv[++i];
       else if (arg == "--prm-dir" && i + 1 < argc)
@@ -515,6 +533,7 @@ main(int argc, char **argv)
           std::cerr << "condensation_benchmark: error: bad argument '" << arg
                     << "' (usage: condensation_benchmark [--quick | --full] "
                        "[--orderings | --analysis-only] [--box 'M, H, M' ...] "
+                       "[--only TEXT ...] [--schur-only] "
                        "[--prm-dir DIR] [--csv FILE] [--repeats N])"
                     << std::endl;
           return 1;
@@ -561,10 +580,16 @@ main(int argc, char **argv)
       print_header();
       for (const Case &c : cases(mode, prm_dir, boxes))
         {
+          // --only: the cases whose label contains one of the texts.
+          if (!only.empty() &&
+              std::none_of(only.begin(), only.end(), [&](const auto &text) {
+                return c.label.find(text) != std::string::npos;
+              }))
+            continue;
           const auto outline = parameters::scan_file(c.file);
           const auto part    = outline.dimension == 2 ?
-                                 run_case<2>(c, outline, repeats) :
-                                 run_case<3>(c, outline, repeats);
+                                 run_case<2>(c, outline, repeats, schur_only) :
+                                 run_case<3>(c, outline, repeats, schur_only);
           for (const Row &r : part)
             {
               print_row(r);

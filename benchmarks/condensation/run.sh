@@ -7,6 +7,8 @@
 #   ./benchmarks/condensation/run.sh --full          up to 1.1 M dofs
 #   ./benchmarks/condensation/run.sh --out DIR ...   results into DIR
 # Other arguments are passed to the executable (e.g. --repeats N;
+# --only TEXT, repeatable: the cases whose label contains TEXT;
+# --schur-only: the Schur route with CHOLMOD alone;
 # --orderings or --analysis-only [--box "M, H, M"]: the table of the
 # orderings of the Schur route into orderings.txt, no plot).
 # Output: results.csv, results.txt and condensation.png in

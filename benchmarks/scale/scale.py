@@ -17,7 +17,17 @@ Scenes:
   hertz_sphere  prm/hertz_sphere_rigid.prm if present: the sphere on a
                 rigid plane, its gmsh mesh at levels 2..4 (--full: ..5),
                 made by scripts/meshes/make_meshes.py in the run's folder;
-                skipped with a note otherwise.
+                skipped with a note otherwise;
+  sphere_scale  prm/scale/hertz_sphere_scale.prm: the same sphere on the
+                graded meshes of the scale family, levels 0, 2 (--quick),
+                .. 4 (default), .. 6 (--full: 1.16 million unknowns, about
+                10^4 contact unknowns), or the levels of --level.
+
+--contact-iterations N ends the contact solve after N outer iterations
+(Contact / Maximum iterations = N, Fallback = false, Allow non-converged =
+true): the run then times the condensation side (factorisation,
+condensation, recovery, output) at full size without waiting for a contact
+solve that does not yet scale; its row says converged = False.
 """
 import argparse
 import csv
@@ -69,6 +79,31 @@ def sphere_cases(prm_dir, sizes, chosen=None):
                       text, flags=re.M)
         body = re.sub(r"set Mesh file\s*=.*", "set Mesh file = " + mesh, body)
         yield "hertz_sphere level %d" % level, body
+
+
+def sphere_scale_cases(prm_dir, sizes, chosen=None):
+    """The graded sphere of prm/scale/hertz_sphere_scale.prm at the levels
+    of its family: the level is set in its `# mesh:` line and its `Mesh
+    file`, and run_case() has the mesh made in the run's folder."""
+    text = open(os.path.join(prm_dir, "scale", "hertz_sphere_scale.prm")).read()
+    levels = {"quick": [0, 2], "default": [0, 2, 4], "full": [0, 2, 4, 6]}
+    for level in chosen or levels[sizes]:
+        mesh = "meshes/hertz_sphere_scale_L%d.msh" % level
+        body = re.sub(r"^(#\s*mesh:\s*)\S+(.*--level )\d+",
+                      r"\g<1>%s\g<2>%d" % (mesh, level), text, flags=re.M)
+        body = re.sub(r"set Mesh file\s*=.*", "set Mesh file = " + mesh, body)
+        yield "sphere scale level %d" % level, body
+
+
+def limit_contact_solve(text, iterations):
+    """The scene with its contact solve ended after @p iterations outer
+    iterations, not converged but allowed to finish."""
+    return re.sub(r"^subsection Contact\s*$",
+                  "subsection Contact\n"
+                  "  set Maximum iterations = %d\n"
+                  "  set Fallback = false\n"
+                  "  set Allow non-converged = true" % iterations,
+                  text, count=1, flags=re.M)
 
 
 def loadavg():
@@ -168,17 +203,28 @@ def main():
     ap.add_argument("--size", action="append", default=[],
                     help="M,H: run the receding block at these subdivisions "
                     "only (repeatable)")
+    ap.add_argument("--level", action="append", type=int, default=[],
+                    help="run the sphere scale family at this level only "
+                    "(repeatable)")
+    ap.add_argument("--contact-iterations", type=int, default=0,
+                    help="end the contact solve after this many outer "
+                    "iterations (0: solve to convergence)")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     dpana = os.path.abspath(args.dpana)
-    generators = {"receding": receding_cases, "hertz_sphere": sphere_cases}
+    generators = {"receding": receding_cases, "hertz_sphere": sphere_cases,
+                  "sphere_scale": sphere_scale_cases}
     rows = []
     for scene in args.scenes.split(","):
         if scene not in generators:
             sys.exit("scale.py: error: unknown scene '%s' (--scenes)" % scene)
         chosen = [tuple(int(v) for v in x.split(",")) for x in args.size]
+        if scene == "sphere_scale":
+            chosen = args.level
         for label, text in generators[scene](args.prm_dir, args.sizes,
                                              chosen):
+            if args.contact_iterations > 0:
+                text = limit_contact_solve(text, args.contact_iterations)
             print("scale.py: running %s ..." % label, flush=True)
             rows.append(run_case(dpana, label, text, args.out))
             write_outputs(rows, args.out)

@@ -44,8 +44,12 @@ namespace dpana
       m.current       = resident_memory();
       const double ng = analysis.n_last;
       const double nc = n_c;
-      m.factor = 8.0 * (9.0 / 8.0 * analysis.factor_entries + 0.5 * ng * ng);
-      m.dense  = 8.0 * (ng * nc + 5.0 * nc * nc);
+      // CHOLMOD's 64-bit interface: 8 bytes per number and per index.
+      m.factor = 8.0 * (analysis.factor_entries + analysis.factor_indices +
+                        analysis.largest_update) +
+                 16.0 * analysis.matrix_entries +
+                 8.0 * 8.0 * analysis.n_unknowns;
+      m.dense = 8.0 * (ng * nc + 5.0 * nc * nc);
       return m;
     }
 

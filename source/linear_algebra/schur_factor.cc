@@ -23,12 +23,12 @@ namespace dpana
     SparseCholesky::schur_factor() const
     {
       const cholmod_factor &L     = factor();
-      const int             n     = L.n;
-      const int             n0    = n - last.size();
-      const int            *super = static_cast<const int *>(L.super);
-      const int            *pi    = static_cast<const int *>(L.pi);
-      const int            *px    = static_cast<const int *>(L.px);
-      const int            *rows  = static_cast<const int *>(L.s);
+      const CholmodIndex    n     = L.n;
+      const CholmodIndex    n0    = n - last.size();
+      const auto           *super = static_cast<const CholmodIndex *>(L.super);
+      const auto           *pi    = static_cast<const CholmodIndex *>(L.pi);
+      const auto           *px    = static_cast<const CholmodIndex *>(L.px);
+      const auto           *rows  = static_cast<const CholmodIndex *>(L.s);
       const double         *x     = static_cast<const double *>(L.x);
 
       Eigen::MatrixXd L22 = Eigen::MatrixXd::Zero(last.size(), last.size());
@@ -36,11 +36,11 @@ namespace dpana
         {
           if (super[s + 1] <= n0)
             continue;
-          const int nsrow = pi[s + 1] - pi[s];
-          for (int j = std::max(super[s], n0); j < super[s + 1]; ++j)
+          const CholmodIndex nsrow = pi[s + 1] - pi[s];
+          for (CholmodIndex j = std::max(super[s], n0); j < super[s + 1]; ++j)
             {
               const double *column = x + px[s] + (j - super[s]) * nsrow;
-              for (int k = j - super[s]; k < nsrow; ++k)
+              for (CholmodIndex k = j - super[s]; k < nsrow; ++k)
                 L22(rows[pi[s] + k] - n0, j - n0) = column[k];
             }
         }
@@ -66,11 +66,11 @@ namespace dpana
       Assert(std::is_sorted(first_rows.begin(), first_rows.end()),
              dealii::ExcMessage("first_rows must be increasing"));
       const cholmod_factor &L     = factor();
-      const int             n0    = L.n - last.size();
-      const int            *super = static_cast<const int *>(L.super);
-      const int            *pi    = static_cast<const int *>(L.pi);
-      const int            *px    = static_cast<const int *>(L.px);
-      const int            *rows  = static_cast<const int *>(L.s);
+      const CholmodIndex    n0    = L.n - last.size();
+      const auto           *super = static_cast<const CholmodIndex *>(L.super);
+      const auto           *pi    = static_cast<const CholmodIndex *>(L.pi);
+      const auto           *px    = static_cast<const CholmodIndex *>(L.px);
+      const auto           *rows  = static_cast<const CholmodIndex *>(L.s);
       const double         *x     = static_cast<const double *>(L.x);
       const int             ldw   = W.rows();
       const double          one = 1.0, zero = 0.0;
@@ -79,12 +79,14 @@ namespace dpana
         {
           if (super[s + 1] <= n0)
             continue;
-          const int nscol = super[s + 1] - super[s];
-          const int nsrow = pi[s + 1] - pi[s];
-          const int first = std::max(super[s], n0);
-          const int k0    = first - super[s];
-          const int ncols = super[s + 1] - first;
-          const int nrhs  = std::upper_bound(first_rows.begin(),
+          // The sizes of one supernode fit the BLAS' int; its offset px[s]
+          // in the factor may not.
+          const int          nscol = super[s + 1] - super[s];
+          const int          nsrow = pi[s + 1] - pi[s];
+          const CholmodIndex first = std::max(super[s], n0);
+          const int          k0    = first - super[s];
+          const int          ncols = super[s + 1] - first;
+          const int          nrhs  = std::upper_bound(first_rows.begin(),
                                             first_rows.end(),
                                             super[s + 1] - 1 - n0) -
                            first_rows.begin();
@@ -120,7 +122,7 @@ namespace dpana
                  &zero,
                  update.data(),
                  &nbelow);
-          const int *below = rows + pi[s] + nscol;
+          const CholmodIndex *below = rows + pi[s] + nscol;
           for (int c = 0; c < nrhs; ++c)
             {
               double       *w = W.data() + std::size_t(c) * ldw - n0;

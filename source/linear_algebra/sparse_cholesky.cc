@@ -20,8 +20,7 @@ namespace dpana
       // the column at which a failed factorisation broke down ("minor") to
       // itself; this subclass makes it visible for the error message.
       class SupernodalLLT
-        : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>,
-                                             Eigen::Lower>
+        : public Eigen::CholmodSupernodalLLT<CholmodMatrix, Eigen::Lower>
       {
       public:
         long
@@ -37,11 +36,11 @@ namespace dpana
         // of the elimination tree, which could move columns of the last
         // block forward.
         void
-        analyze_given(const Eigen::SparseMatrix<double> &K_lower,
-                      std::vector<int>                  &perm)
+        analyze_given(const CholmodMatrix       &K_lower,
+                      std::vector<CholmodIndex> &perm)
         {
           if (this->m_cholmodFactor)
-            cholmod_free_factor(&this->m_cholmodFactor, &this->cholmod());
+            cholmod_l_free_factor(&this->m_cholmodFactor, &this->cholmod());
           cholmod_sparse A = Eigen::viewAsCholmod(
             K_lower.template selfadjointView<Eigen::Lower>());
           cholmod_common &c         = this->cholmod();
@@ -52,7 +51,7 @@ namespace dpana
           c.method[0].ordering      = CHOLMOD_GIVEN;
           c.postorder               = 0;
           this->m_cholmodFactor =
-            cholmod_analyze_p(&A, perm.data(), nullptr, 0, &c);
+            cholmod_l_analyze_p(&A, perm.data(), nullptr, 0, &c);
           c.nmethods            = nmethods;
           c.method[0].ordering  = ordering;
           c.postorder           = postorder;
@@ -64,11 +63,12 @@ namespace dpana
         }
 
         // The fill-reducing permutation chosen by the last analysis.
-        std::vector<int>
+        std::vector<CholmodIndex>
         permutation() const
         {
-          const int *p = static_cast<const int *>(this->m_cholmodFactor->Perm);
-          return std::vector<int>(p, p + this->m_cholmodFactor->n);
+          const auto *p =
+            static_cast<const CholmodIndex *>(this->m_cholmodFactor->Perm);
+          return std::vector<CholmodIndex>(p, p + this->m_cholmodFactor->n);
         }
 
         const cholmod_factor &
@@ -87,11 +87,28 @@ namespace dpana
           const cholmod_common    &c = this->cholmod();
           a.n_unknowns               = L.n;
           a.factor_entries           = L.is_super ? double(L.xsize) : c.lnz;
+          a.factor_indices           = L.is_super ? double(L.ssize) : c.lnz;
+          a.largest_update           = L.is_super ? double(L.maxcsize) : 0.0;
           a.factor_nonzeros          = c.lnz;
           a.factor_flops             = c.fl;
           return a;
         }
       };
+
+
+
+      // CHOLMOD's status after a failed analysis or factorisation: a factor
+      // too large to address or to allocate is std::length_error.
+      void
+      throw_if_too_large(const int status, const Eigen::Index n_unknowns)
+      {
+        if (status == CHOLMOD_TOO_LARGE || status == CHOLMOD_OUT_OF_MEMORY)
+          throw std::length_error(
+            "the factor of " + std::to_string(n_unknowns) + " unknowns is " +
+            (status == CHOLMOD_TOO_LARGE ? "too large for CHOLMOD to address" :
+                                           "more than the memory CHOLMOD "
+                                           "could allocate"));
+      }
     } // namespace
 
 
@@ -136,12 +153,12 @@ namespace dpana
       lines.clear();
       last.clear();
 
-      std::vector<Eigen::Triplet<double>> triplets;
+      std::vector<Eigen::Triplet<double, CholmodIndex>> triplets;
       triplets.reserve(K.n_nonzero_elements() / 2 + n_rows);
       for (auto it = K.begin(); it != K.end(); ++it)
         if (it->column() <= it->row() && it->value() != 0.0)
           triplets.emplace_back(it->row(), it->column(), it->value());
-      Eigen::SparseMatrix<double> K_lower(n_rows, n_rows);
+      CholmodMatrix K_lower(n_rows, n_rows);
       K_lower.setFromTriplets(triplets.begin(), triplets.end());
       factorize_lower(K_lower);
     }
@@ -159,7 +176,7 @@ namespace dpana
         free[i] = reduced_index[i] = i;
       lines.clear();
       last.clear();
-      Eigen::SparseMatrix<double> K_lower = K.triangularView<Eigen::Lower>();
+      const CholmodMatrix K_lower = K.triangularView<Eigen::Lower>();
       factorize_lower(K_lower);
     }
 
@@ -176,7 +193,7 @@ namespace dpana
 
 
 
-    Eigen::SparseMatrix<double>
+    CholmodMatrix
     SparseCholesky::reduce(const dealii::SparseMatrix<double>      &K,
                            const dealii::AffineConstraints<double> &constraints)
     {
@@ -208,8 +225,8 @@ namespace dpana
 
       // The reduced matrix: the free rows and columns of the condensed
       // matrix, lower triangle.
-      const unsigned int                  n_free = free.size();
-      std::vector<Eigen::Triplet<double>> triplets;
+      const unsigned int                                n_free = free.size();
+      std::vector<Eigen::Triplet<double, CholmodIndex>> triplets;
       triplets.reserve(K.n_nonzero_elements() / 2 + n_free);
       for (auto it = K.begin(); it != K.end(); ++it)
         {
@@ -218,7 +235,7 @@ namespace dpana
           if (r >= 0 && c >= 0 && c <= r && it->value() != 0.0)
             triplets.emplace_back(r, c, it->value());
         }
-      Eigen::SparseMatrix<double> K_lower(n_free, n_free);
+      CholmodMatrix K_lower(n_free, n_free);
       K_lower.setFromTriplets(triplets.begin(), triplets.end());
       return K_lower;
     }
@@ -226,7 +243,7 @@ namespace dpana
 
 
     void
-    SparseCholesky::factorize_lower(const Eigen::SparseMatrix<double> &K_lower)
+    SparseCholesky::factorize_lower(const CholmodMatrix &K_lower)
     {
       impl->factorized = false;
       AssertThrow(K_lower.rows() > 0,
@@ -245,9 +262,12 @@ namespace dpana
         }
       else
         order_last(K_lower);
+      impl->analysis.matrix_entries = K_lower.nonZeros();
       if (impl->check)
         impl->check(impl->analysis);
       impl->llt.factorize(K_lower);
+      if (impl->llt.info() != Eigen::Success)
+        throw_if_too_large(impl->llt.cholmod().status, K_lower.rows());
       if (impl->llt.info() != Eigen::Success)
         {
           std::ostringstream message;
@@ -276,8 +296,8 @@ namespace dpana
       const dealii::AffineConstraints<double> &constraints,
       const std::vector<unsigned int>         &last_dofs)
     {
-      const Eigen::SparseMatrix<double> K_lower = reduce(K, constraints);
-      const std::vector<bool>           is_last =
+      const CholmodMatrix     K_lower = reduce(K, constraints);
+      const std::vector<bool> is_last =
         unknowns_of_dofs(last_dofs, constraints, reduced_index, free.size());
       last.clear();
       for (unsigned int k = 0; k < free.size(); ++k)
@@ -291,24 +311,21 @@ namespace dpana
     // The ordering of the chosen kind (last_block_ordering.h) is handed to
     // CHOLMOD as the given one.
     void
-    SparseCholesky::order_last(const Eigen::SparseMatrix<double> &K_lower)
+    SparseCholesky::order_last(const CholmodMatrix &K_lower)
     {
       std::vector<bool> is_last(K_lower.rows(), false);
       for (const unsigned int k : last)
         is_last[k] = true;
-      std::vector<int> given =
+      std::vector<CholmodIndex> given =
         order_last_block(K_lower, is_last, last_ordering, impl->llt.cholmod());
       impl->llt.analyze_given(K_lower, given);
-      // A factor beyond CHOLMOD's 32-bit indices (a 3D body of a million
-      // dofs with 10^4 surface dofs last reaches it) is reported as
+      // A factor CHOLMOD cannot address or allocate is reported as
       // std::length_error, which the condensation turns into an input error
-      // naming the sizes.
+      // naming the sizes. (With the 64-bit indices the first is out of
+      // reach of any mesh this code builds.)
       const int status = impl->llt.cholmod().status;
-      if (impl->llt.info() != Eigen::Success && status == CHOLMOD_TOO_LARGE)
-        throw std::length_error(
-          "the factor of " + std::to_string(K_lower.rows()) +
-          " unknowns would hold more than 2^31 numbers (17 GB), more than "
-          "CHOLMOD's 32-bit indices address");
+      if (impl->llt.info() != Eigen::Success)
+        throw_if_too_large(status, K_lower.rows());
       AssertThrow(impl->llt.info() == Eigen::Success,
                   dealii::ExcMessage(
                     "SparseCholesky: CHOLMOD's analysis with the given "

@@ -17,17 +17,21 @@ namespace dpana
      * estimated from CHOLMOD's symbolic analysis before the numerical
      * factorisation, the expensive part, begins.
      *
-     * The factorisation of the Schur route holds the supernodal factor
-     * (factor_entries numbers of 8 bytes, with about 1/8 more for its row
-     * indices, plus the largest dense update of a supernode, bounded here by
-     * the dense n_Gamma x n_Gamma block of the surface). The condensation
+     * The factorisation of the Schur route holds the supernodal factor, in
+     * CHOLMOD's 64-bit interface: its $n_L$ numbers (factor_entries) and
+     * its $n_s$ row indices (factor_indices) of 8 bytes each. While it
+     * runs, CHOLMOD adds the largest dense update matrix of a supernode
+     * ($n_C$ numbers, largest_update), a permuted copy of the lower triangle
+     * of the matrix ($n_K$ entries of a number and an index) and about
+     * eight integer arrays of the $n$ unknowns (the permutation, the column
+     * counts, the supernodal maps and their workspaces). The condensation
      * adds the dense block W (n_Gamma x n_c) and A (n_c x n_c); the contact
      * problem holds A once more and its solver a dense Cholesky factor of
      * the same size and a few matrices of that size for its iterations
      * (Alart-Curnier: the Jacobian and its factor). Hence
      * @f[
      *   M \approx M_\text{now}
-     *       + 8 \left(\tfrac98 n_L + \tfrac12 n_\Gamma^2\right)
+     *       + 8 \left(n_L + n_s + n_C\right) + 16\, n_K + 64\, n
      *       + 8\, n_\Gamma n_c + 8 \cdot 5\, n_c^2 ,
      * @f]
      * with M_now the resident memory of the process when the estimate is

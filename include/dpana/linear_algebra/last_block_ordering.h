@@ -16,6 +16,21 @@ namespace dpana
   namespace linear_algebra
   {
     /**
+     * The index type of CHOLMOD's 64-bit interface (the cholmod_l_*
+     * functions), which every CHOLMOD call of dpana uses: a factor may then
+     * hold more than $2^{31}$ numbers (17 GB), which a 3D body of a million
+     * degrees of freedom with $10^4$ surface unknowns ordered last needs.
+     */
+    using CholmodIndex = SuiteSparse_long;
+
+    /**
+     * A sparse matrix in the index type of CHOLMOD's 64-bit interface, as
+     * Eigen's CHOLMOD wrappers take it.
+     */
+    using CholmodMatrix =
+      Eigen::SparseMatrix<double, Eigen::ColMajor, CholmodIndex>;
+
+    /**
      * How the unknowns of a symmetric positive definite matrix are ordered
      * for a Cholesky factorisation $K = P^T L L^T P$ in which a given set
      * $\Gamma$ of unknowns must come last, so that the last diagonal block
@@ -66,13 +81,14 @@ namespace dpana
      * whose lower triangle is @p K_lower, with the unknowns $i$ for which
      * @p is_last[i] holds at the end: entry k of the result is the unknown
      * that becomes column k of the factor. @p common is the CHOLMOD
-     * workspace of the factorisation that will use it.
+     * workspace of the factorisation that will use it (started by
+     * cholmod_l_start()).
      */
-    std::vector<int>
-    order_last_block(const Eigen::SparseMatrix<double> &K_lower,
-                     const std::vector<bool>           &is_last,
-                     const LastBlockOrdering            ordering,
-                     cholmod_common                    &common);
+    std::vector<CholmodIndex>
+    order_last_block(const CholmodMatrix     &K_lower,
+                     const std::vector<bool> &is_last,
+                     const LastBlockOrdering  ordering,
+                     cholmod_common          &common);
   } // namespace linear_algebra
 } // namespace dpana
 

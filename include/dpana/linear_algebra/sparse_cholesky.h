@@ -80,6 +80,13 @@ namespace dpana
      * backward substitution sweep through the supernodal factor, which is
      * much faster than the same number of single-vector solves because it
      * works with dense matrix-matrix kernels (BLAS 3).
+     *
+     * <h3>Size</h3>
+     *
+     * Every call goes through CHOLMOD's 64-bit interface (cholmod_l_*,
+     * CholmodIndex): the factor may hold more than $2^{31}$ numbers, as the
+     * factor of a 3D body of $10^6$ degrees of freedom with $10^4$ surface
+     * unknowns ordered last does. Its row indices take 8 bytes each.
      */
     class SparseCholesky
     {
@@ -103,6 +110,16 @@ namespace dpana
         /// Numbers the supernodal factor stores (its dense supernodes,
         /// zeros of the amalgamation included): 8 bytes each.
         double factor_entries = 0;
+        /// Row indices the supernodal factor stores (one per row of each
+        /// supernode): 8 bytes each in CHOLMOD's 64-bit interface.
+        double factor_indices = 0;
+        /// Numbers of the largest dense update matrix of a supernode, the
+        /// workspace the numerical factorisation allocates on top of the
+        /// factor: 8 bytes each.
+        double largest_update = 0;
+        /// Entries of the lower triangle handed to CHOLMOD (the numerical
+        /// factorisation makes a permuted copy of it: 16 bytes each).
+        double matrix_entries = 0;
         /// Nonzeros of L proper (without the amalgamation's zeros).
         double factor_nonzeros = 0;
         /// Floating point operations of the factorisation.
@@ -306,12 +323,12 @@ namespace dpana
        * Number the free degrees of freedom, copy the constraint lines and
        * return the lower triangle of $K_r$.
        */
-      Eigen::SparseMatrix<double>
+      CholmodMatrix
       reduce(const dealii::SparseMatrix<double>      &K,
              const dealii::AffineConstraints<double> &constraints);
 
       void
-      factorize_lower(const Eigen::SparseMatrix<double> &K_lower);
+      factorize_lower(const CholmodMatrix &K_lower);
 
       /**
        * CHOLMOD's supernodal factor of factorize_with_last().
@@ -323,7 +340,7 @@ namespace dpana
        * Analyse again with the unknowns of #last at the end.
        */
       void
-      order_last(const Eigen::SparseMatrix<double> &K_lower);
+      order_last(const CholmodMatrix &K_lower);
 
       struct Impl;
       std::unique_ptr<Impl> impl;
