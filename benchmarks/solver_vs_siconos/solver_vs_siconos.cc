@@ -31,7 +31,12 @@
 // Output: a table on stdout and a CSV file (--csv, default results.csv).
 //
 // Usage: solver_vs_siconos [--quick | --full] [--target 1e-8] [--csv FILE]
-//                          [--fclib FILE [FILE...]]
+//                          [--fclib FILE [FILE...]] [--fclib-only]
+//                          [--solvers NAME,NAME,...]
+// --fclib-only leaves out the built-in problems; --solvers runs only the
+// named solvers (the names of the table, e.g. siconos_fc3d_nsn_ac,
+// dpana_splitting_active_set): on problems of 10^3-10^4 unknowns the slow
+// solvers (PFP, NSGS, the PGS splitting) would take hours.
 #include <dpana/base/exceptions.h>
 #include <dpana/contact/residual.h>
 #include <dpana/contact/solver.h>
@@ -314,7 +319,9 @@ namespace
       << "usage: solver_vs_siconos [--quick | --full] [--target TOL] [--csv "
          "FILE] [--fclib FILE [FILE...]]\n"
       << "  --fclib: add the FCLIB local problems of the files (repeatable);\n"
-      << "           a name with * had its rigid mode fixed at equilibrium\n";
+      << "           a name with * had its rigid mode fixed at equilibrium\n"
+      << "  --fclib-only: leave out the built-in problems\n"
+      << "  --solvers NAME,...: run only these solvers (names of the table)\n";
   }
 } // namespace
 
@@ -325,9 +332,11 @@ main(int argc, char **argv)
   // once for the whole run, serial.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::vector<std::string>                 fclib_files;
-  Level                                    level  = Level::standard;
-  double                                   target = 1e-8;
-  std::string                              csv    = "results.csv";
+  Level                                    level   = Level::standard;
+  double                                   target  = 1e-8;
+  std::string                              csv     = "results.csv";
+  bool                                     builtin = true;
+  std::vector<std::string>                 only; // empty: every solver
   for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -349,6 +358,14 @@ main(int argc, char **argv)
         }
       else if (arg == "--csv" && i + 1 < argc)
         csv = argv[++i];
+      else if (arg == "--fclib-only")
+        builtin = false;
+      else if (arg == "--solvers" && i + 1 < argc)
+        {
+          std::stringstream list(argv[++i]);
+          for (std::string name; std::getline(list, name, ',');)
+            only.push_back(name);
+        }
       else if (arg == "--fclib")
         {
           const int first = i + 1;
@@ -388,7 +405,11 @@ main(int argc, char **argv)
   const auto               start_all = std::chrono::steady_clock::now();
   std::vector<Row>         rows;
   std::vector<std::string> states;
-  std::vector<Case>        cases = make_cases(level);
+  std::vector<Case> cases  = builtin ? make_cases(level) : std::vector<Case>();
+  const auto        chosen = [&](const std::string &name) {
+    return only.empty() ||
+           std::find(only.begin(), only.end(), name) != only.end();
+  };
   for (const std::string &file : fclib_files)
     {
       try
@@ -410,6 +431,8 @@ main(int argc, char **argv)
 
       for (const sa::PeerSolver s : peer_solvers(dim))
         {
+          if (!chosen(sa::to_string(s)))
+            continue;
           Eigen::VectorXd r;
           case_rows.push_back(run_peer(c, s, target, r));
           solutions.push_back(r);
@@ -419,6 +442,8 @@ main(int argc, char **argv)
                                  SolverType::nsgs,
                                  SolverType::alart_curnier})
         {
+          if (!chosen("dpana_" + to_string(t)))
+            continue;
           Eigen::VectorXd r;
           bool            implemented = false;
           Row             row         = run_dpana(c, t, target, r, implemented);

@@ -29,6 +29,8 @@
 #ifndef dpana_contact_normal_lcp_h
 #define dpana_contact_normal_lcp_h
 
+#include <dpana/contact/dense_cholesky.h>
+
 #include <Eigen/Dense>
 
 #include <string>
@@ -128,10 +130,10 @@ namespace dpana
       // Factorisation of the last contact set of solve_active_set (M_CC,
       // and with equality rows M_CC^{-1} G_C^T and the Schur complement),
       // reused while the set repeats.
-      std::vector<Eigen::Index>   factored_index;
-      bool                        factor_valid = false;
-      Eigen::MatrixXd             Mcc, Gc, Y;
-      Eigen::LLT<Eigen::MatrixXd> llt;
+      std::vector<Eigen::Index> factored_index;
+      bool                      factor_valid = false;
+      Eigen::MatrixXd           Mcc, Gc, Y;
+      DenseCholesky             llt;
       Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> schur;
     };
   } // namespace contact

@@ -1,0 +1,147 @@
+#include <dpana/contact/dense_cholesky.h>
+#include <dpana/linear_algebra/blas.h>
+
+#include <climits>
+
+// LAPACK's Cholesky factorisation and solve (Fortran calling convention,
+// column-major storage).
+extern "C"
+{
+  void
+  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+
+  void
+  dpotrs_(const char   *uplo,
+          const int    *n,
+          const int    *nrhs,
+          const double *a,
+          const int    *lda,
+          double       *b,
+          const int    *ldb,
+          int          *info);
+}
+
+namespace dpana
+{
+  namespace contact
+  {
+    namespace
+    {
+      int
+      as_int(const Eigen::Index n)
+      {
+        return static_cast<int>(std::min<Eigen::Index>(n, INT_MAX));
+      }
+    } // namespace
+
+
+
+    bool
+    DenseCholesky::compute(const Eigen::MatrixXd &H)
+    {
+      if (H.rows() < small)
+        {
+          factor.resize(0, 0);
+          llt.compute(H);
+          ok = (llt.info() == Eigen::Success);
+          return ok;
+        }
+      factor = H;
+      return factor_in_place();
+    }
+
+
+
+    bool
+    DenseCholesky::compute(Eigen::MatrixXd &&H)
+    {
+      if (H.rows() < small)
+        return compute(static_cast<const Eigen::MatrixXd &>(H));
+      factor = std::move(H);
+      return factor_in_place();
+    }
+
+
+
+    bool
+    DenseCholesky::factor_in_place()
+    {
+      const int n    = as_int(factor.rows());
+      int       info = 0;
+      dpotrf_("L", &n, factor.data(), &n, &info);
+      ok = (info == 0);
+      return ok;
+    }
+
+
+
+    void
+    DenseCholesky::solve_in_place(Eigen::MatrixXd &R) const
+    {
+      if (R.size() == 0)
+        return;
+      if (factor.size() == 0)
+        {
+          R = llt.solve(R);
+          return;
+        }
+      const int n = as_int(factor.rows()), k = as_int(R.cols());
+      int       info = 0;
+      dpotrs_("L", &n, &k, factor.data(), &n, R.data(), &n, &info);
+    }
+
+
+
+    Eigen::MatrixXd
+    DenseCholesky::solve(const Eigen::MatrixXd &R) const
+    {
+      Eigen::MatrixXd X = R;
+      solve_in_place(X);
+      return X;
+    }
+
+
+
+    Eigen::VectorXd
+    DenseCholesky::solve(const Eigen::VectorXd &r) const
+    {
+      Eigen::MatrixXd X = r;
+      solve_in_place(X);
+      return X.col(0);
+    }
+
+
+
+    void
+    DenseCholesky::solve_lower_in_place(Eigen::MatrixXd &R) const
+    {
+      if (R.size() == 0)
+        return;
+      if (factor.size() == 0)
+        {
+          llt.matrixL().solveInPlace(R);
+          return;
+        }
+      const int    n = as_int(factor.rows()), k = as_int(R.cols());
+      const double one = 1.0;
+      dtrsm_("L", "L", "N", "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
+    }
+
+
+
+    void
+    DenseCholesky::solve_upper_in_place(Eigen::MatrixXd &R) const
+    {
+      if (R.size() == 0)
+        return;
+      if (factor.size() == 0)
+        {
+          llt.matrixU().solveInPlace(R);
+          return;
+        }
+      const int    n = as_int(factor.rows()), k = as_int(R.cols());
+      const double one = 1.0;
+      dtrsm_("L", "L", "T", "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
+    }
+  } // namespace contact
+} // namespace dpana
