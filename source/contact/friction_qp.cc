@@ -403,15 +403,19 @@ namespace dpana
     //
     // In a splitting the T-steps follow one another with data (c, radii)
     // that change less and less. Started from the last solution, the
-    // natural map sees the new data and classifies many stick blocks as
-    // slipping and back; the partition then takes several Newton steps,
-    // each with a new factorisation, to settle. The predictor is one step
-    // with the generalised Jacobian of the LAST Newton step of the previous
-    // solve (its eigen-directions, with the radii and the points y of that
-    // step) and the natural map F of the new data: for unchanged partition
-    // and radii it is the Newton step of the new problem, and its factors
-    // are those kept for that partition (factor_newton_matrix). It is kept
-    // only if it passes the Armijo test; otherwise the solve goes on from
+    // natural map of the new data clips the points y_j = T_j - rho_j w_j of
+    // many stick blocks onto their circles, and the partition then takes
+    // several Newton steps, each with a new factorisation, to settle. The
+    // predictor is one Newton step of the new data on the PREVIOUS
+    // partition: the generalised Jacobian of the last Newton step of the
+    // previous solve (its eigen-directions, from the radii and the points y
+    // of that step), and the natural map with the blocks that stuck there
+    // taken as sticking, F_j = T_j - y_j = rho_j w_j (no clipping). If the
+    // partition is unchanged this is the exact step to the solution of the
+    // new problem for the interval and the polygon, and a Newton step on the
+    // slip circles for the disc; its factors are those kept for that
+    // partition (factor_newton_matrix). It is kept only if it passes the
+    // Armijo test on the true natural map; otherwise the solve goes on from
     // the start point as before. False if there is no previous step or the
     // step could not be made.
     bool
@@ -419,11 +423,16 @@ namespace dpana
     {
       if (radius_last.size() != static_cast<Eigen::Index>(n))
         return false;
+      Eigen::VectorXd F_previous = F;
+      for (unsigned int j = 0; j < n; ++j)
+        if (partition[j] == 2)
+          for (unsigned int a = 0; a < m; ++a)
+            F_previous[m * j + a] = rho[j] * w[m * j + a];
       y.swap(y_last);
       region.swap(region_last);
       const Eigen::VectorXd radius = radius_last;
-      newton_directions(radius, F, dx);
-      return newton_step(F, dx).empty();
+      newton_directions(radius, F_previous, dx);
+      return newton_step(F_previous, dx).empty();
     }
 
 
