@@ -34,7 +34,12 @@
 //     interval end, polygon vertex, the radial direction of a disc slip
 //     block, the normal of a facet) have their step outright, the others
 //     (stick, the facet or circle tangent) enter a Cholesky factorisation,
-//     with a Schur complement for the equality rows.
+//     with a Schur complement for the equality rows (dense_cholesky.h: on
+//     the system LAPACK). Warm started (the T-steps of a splitting), the
+//     solve begins with a predictor: one Newton step of the new data on the
+//     partition of the previous solve's last step, kept if it passes the
+//     Armijo test (friction_qp.cc). The line search moves w = M T + c along
+//     the step instead of multiplying by M at every trial point.
 #ifndef dpana_contact_friction_qp_h
 #define dpana_contact_friction_qp_h
 

@@ -21,7 +21,8 @@
 //     for N = min(0, N - w / diag(M))): the contact set
 //     C = { j : N_j - w_j / M_jj < 0 } is guessed, the equality-constrained
 //     QP on C (N_j = 0 off C, w_j = 0 on C, G N = e) is solved exactly
-//     (Cholesky of M_CC and a Schur complement for alpha), and C is updated
+//     (Cholesky of M_CC on the system LAPACK, dense_cholesky.h, and a Schur
+//     complement for alpha), and C is updated
 //     until it repeats, which gives the exact solution to round-off. A set
 //     that was already visited (cycling, possible for SPD matrices that are
 //     not M-matrices) triggers a few PGS sweeps from the current point before
