@@ -19,6 +19,13 @@ extern "C"
           double       *b,
           const int    *ldb,
           int          *info);
+
+  // OpenBLAS' thread count; weak, so that another system BLAS without them
+  // links as well (the calls are then skipped).
+  void
+  openblas_set_num_threads(int) __attribute__((weak));
+  int
+  openblas_get_num_threads() __attribute__((weak));
 }
 
 namespace dpana
@@ -32,6 +39,35 @@ namespace dpana
       {
         return static_cast<int>(std::min<Eigen::Index>(n, INT_MAX));
       }
+
+      // OpenBLAS on one thread for the blocks below 1024 rows (restored at
+      // the end of the scope): there the threads' start and synchronisation
+      // cost more than they save, and on a machine with more runnable jobs
+      // than cores a factorisation of a few hundred rows took up to ten
+      // times longer on two threads than on one.
+      class ThreadsForSize
+      {
+      public:
+        explicit ThreadsForSize(const Eigen::Index rows)
+        {
+          if (rows < 1024 && openblas_set_num_threads &&
+              openblas_get_num_threads)
+            {
+              saved = openblas_get_num_threads();
+              if (saved > 1)
+                openblas_set_num_threads(1);
+            }
+        }
+
+        ~ThreadsForSize()
+        {
+          if (saved > 1)
+            openblas_set_num_threads(saved);
+        }
+
+      private:
+        int saved = 0;
+      };
     } // namespace
 
 
@@ -66,8 +102,9 @@ namespace dpana
     bool
     DenseCholesky::factor_in_place()
     {
-      const int n    = as_int(factor.rows());
-      int       info = 0;
+      const ThreadsForSize threads(factor.rows());
+      const int            n    = as_int(factor.rows());
+      int                  info = 0;
       dpotrf_("L", &n, factor.data(), &n, &info);
       ok = (info == 0);
       return ok;
@@ -85,8 +122,9 @@ namespace dpana
           R = llt.solve(R);
           return;
         }
-      const int n = as_int(factor.rows()), k = as_int(R.cols());
-      int       info = 0;
+      const ThreadsForSize threads(factor.rows());
+      const int            n = as_int(factor.rows()), k = as_int(R.cols());
+      int                  info = 0;
       dpotrs_("L", &n, &k, factor.data(), &n, R.data(), &n, &info);
     }
 
@@ -122,8 +160,9 @@ namespace dpana
           llt.matrixL().solveInPlace(R);
           return;
         }
-      const int    n = as_int(factor.rows()), k = as_int(R.cols());
-      const double one = 1.0;
+      const ThreadsForSize threads(factor.rows());
+      const int            n = as_int(factor.rows()), k = as_int(R.cols());
+      const double         one = 1.0;
       dtrsm_("L", "L", "N", "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
     }
 
@@ -139,8 +178,9 @@ namespace dpana
           llt.matrixU().solveInPlace(R);
           return;
         }
-      const int    n = as_int(factor.rows()), k = as_int(R.cols());
-      const double one = 1.0;
+      const ThreadsForSize threads(factor.rows());
+      const int            n = as_int(factor.rows()), k = as_int(R.cols());
+      const double         one = 1.0;
       dtrsm_("L", "L", "T", "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
     }
   } // namespace contact
