@@ -153,17 +153,7 @@ namespace dpana
     void
     DenseCholesky::solve_lower_in_place(Eigen::MatrixXd &R) const
     {
-      if (R.size() == 0)
-        return;
-      if (factor.size() == 0)
-        {
-          llt.matrixL().solveInPlace(R);
-          return;
-        }
-      const ThreadsForSize threads(factor.rows());
-      const int            n = as_int(factor.rows()), k = as_int(R.cols());
-      const double         one = 1.0;
-      dtrsm_("L", "L", "N", "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
+      triangular_solve(R, false);
     }
 
 
@@ -171,17 +161,39 @@ namespace dpana
     void
     DenseCholesky::solve_upper_in_place(Eigen::MatrixXd &R) const
     {
+      triangular_solve(R, true);
+    }
+
+
+
+    void
+    DenseCholesky::triangular_solve(Eigen::MatrixXd &R,
+                                    const bool       transpose) const
+    {
       if (R.size() == 0)
         return;
       if (factor.size() == 0)
         {
-          llt.matrixU().solveInPlace(R);
+          if (transpose)
+            llt.matrixU().solveInPlace(R);
+          else
+            llt.matrixL().solveInPlace(R);
           return;
         }
       const ThreadsForSize threads(factor.rows());
       const int            n = as_int(factor.rows()), k = as_int(R.cols());
       const double         one = 1.0;
-      dtrsm_("L", "L", "T", "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
+      dtrsm_("L",
+             "L",
+             transpose ? "T" : "N",
+             "N",
+             &n,
+             &k,
+             &one,
+             factor.data(),
+             &n,
+             R.data(),
+             &n);
     }
   } // namespace contact
 } // namespace dpana

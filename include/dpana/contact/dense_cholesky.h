@@ -67,6 +67,10 @@ namespace dpana
       bool
       factor_in_place();
 
+      // R <- L^{-1} R, or L^{-T} R if transpose.
+      void
+      triangular_solve(Eigen::MatrixXd &R, bool transpose) const;
+
       // Below this size Eigen's LLT factors and solves.
       static constexpr Eigen::Index small = 64;
 
