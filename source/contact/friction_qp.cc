@@ -166,11 +166,24 @@ namespace dpana
                             const Eigen::VectorXd &beta,
                             Eigen::VectorXd       &F)
     {
-      const Eigen::Index q = T.size();
-      w.noalias()          = M * T;
+      w.noalias() = M * T;
       w += c;
       if (G.rows() > 0)
         w.noalias() += G.transpose() * beta;
+      natural_map_of_w(radius, e, T, F);
+    }
+
+
+
+    // F at T for the w already in place (the line search moves w along
+    // the step, w(T + t dT) = w(T) + t (M dT + G^T dbeta), instead of a
+    // product with M per trial point).
+    void
+    FrictionQp::natural_map_of_w(const Eigen::VectorXd &radius,
+                                 const Eigen::VectorXd &e,
+                                 const Eigen::VectorXd &T,
+                                 Eigen::VectorXd       &F)
+    {
       for (unsigned int j = 0; j < n; ++j)
         {
           double p[2];
@@ -182,7 +195,6 @@ namespace dpana
         }
       if (G.rows() > 0)
         F.tail(G.rows()).noalias() = G * T - e;
-      (void)q;
     }
 
 
@@ -266,6 +278,9 @@ namespace dpana
     {
       dx.setZero();
       directions.clear();
+      y_last      = y;
+      region_last = region;
+      radius_last = radius;
       for (unsigned int j = 0; j < n; ++j)
         {
           double lambda[2], V[4];
@@ -384,6 +399,44 @@ namespace dpana
 
 
 
+    // @sect5{The predictor of a warm started solve}
+    //
+    // In a splitting the T-steps follow one another with data (c, radii)
+    // that change less and less. Started from the last solution, the
+    // natural map of the new data clips the points y_j = T_j - rho_j w_j of
+    // many stick blocks onto their circles, and the partition then takes
+    // several Newton steps, each with a new factorisation, to settle. The
+    // predictor is one Newton step of the new data on the PREVIOUS
+    // partition: the generalised Jacobian of the last Newton step of the
+    // previous solve (its eigen-directions, from the radii and the points y
+    // of that step), and the natural map with the blocks that stuck there
+    // taken as sticking, F_j = T_j - y_j = rho_j w_j (no clipping). If the
+    // partition is unchanged this is the exact step to the solution of the
+    // new problem for the interval and the polygon, and a Newton step on the
+    // slip circles for the disc; its factors are those kept for that
+    // partition (factor_newton_matrix). It is kept only if it passes the
+    // Armijo test on the true natural map; otherwise the solve goes on from
+    // the start point as before. False if there is no previous step or the
+    // step could not be made.
+    bool
+    FrictionQp::predictor_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx)
+    {
+      if (radius_last.size() != static_cast<Eigen::Index>(n))
+        return false;
+      Eigen::VectorXd F_previous = F;
+      for (unsigned int j = 0; j < n; ++j)
+        if (partition[j] == 2)
+          for (unsigned int a = 0; a < m; ++a)
+            F_previous[m * j + a] = rho[j] * w[m * j + a];
+      y.swap(y_last);
+      region.swap(region_last);
+      const Eigen::VectorXd radius = radius_last;
+      newton_directions(radius, F_previous, dx);
+      return newton_step(F_previous, dx).empty();
+    }
+
+
+
     InnerResult
     FrictionQp::solve_active_set(const Eigen::VectorXd &c,
                                  const Eigen::VectorXd &radius,
@@ -403,13 +456,51 @@ namespace dpana
       v.resize(q);
       unsigned int failures = 0;
       natural_map(c, radius, e, T, beta, F);
+      // Armijo backtracking on 1/2 ||F||^2 along dx (at most max_steps
+      // halvings); an accepted step moves (T, beta, F). w is that of
+      // (T, beta) on entry (the last natural map was made there).
+      Eigen::VectorXd w0(q), dw(q);
+      const auto      line_search = [&](const unsigned int max_steps) {
+        w0           = w;
+        dw.noalias() = M * dx.head(q);
+        if (me > 0)
+          dw.noalias() += G.transpose() * dx.tail(me);
+        const bool accepted =
+          armijo_backtracking(0.5 * F.squaredNorm(),
+                              max_steps,
+                              [&](const double t) {
+                                Ttrial = T + t * dx.head(q);
+                                if (me > 0)
+                                  btrial = beta + t * dx.tail(me);
+                                w = w0 + t * dw;
+                                natural_map_of_w(radius, e, Ttrial, Ftrial);
+                                return 0.5 * Ftrial.squaredNorm();
+                              });
+        if (accepted)
+          {
+            T.swap(Ttrial);
+            if (me > 0)
+              beta.swap(btrial);
+            F.swap(Ftrial);
+          }
+        return accepted;
+      };
+      if (!active_set_converged(F, radius, e, T) && predictor_step(F, dx) &&
+          !line_search(4))
+        natural_map(c, radius, e, T, beta, F); // y and region of T again
       for (unsigned int step = 0; step <= options.max_iterations; ++step)
         {
           result.iterations = step;
+          // Converged on the updated w? Then again on w afresh, so that the
+          // round-off of the updates cannot fake convergence.
           if (active_set_converged(F, radius, e, T))
             {
-              result.converged = true;
-              return result;
+              natural_map(c, radius, e, T, beta, F);
+              if (active_set_converged(F, radius, e, T))
+                {
+                  result.converged = true;
+                  return result;
+                }
             }
           if (step == options.max_iterations)
             break;
@@ -418,24 +509,8 @@ namespace dpana
           result.message = newton_step(F, dx);
           if (!result.message.empty())
             return result;
-
-          // Armijo backtracking on 1/2 ||F||^2.
-          const bool accepted =
-            armijo_backtracking(0.5 * F.squaredNorm(), 40, [&](const double t) {
-              Ttrial = T + t * dx.head(q);
-              if (me > 0)
-                btrial = beta + t * dx.tail(me);
-              natural_map(c, radius, e, Ttrial, btrial, Ftrial);
-              return 0.5 * Ftrial.squaredNorm();
-            });
-          if (accepted)
-            {
-              T.swap(Ttrial);
-              if (me > 0)
-                beta.swap(btrial);
-              F.swap(Ftrial);
-              continue;
-            }
+          if (line_search(40))
+            continue;
           // Globalisation fallback: a few PGS sweeps.
           if (++failures > 50)
             {

@@ -1,11 +1,27 @@
 #include <dpana/contact/friction_qp.h>
-
-#include <Eigen/Cholesky>
+#include <dpana/linear_algebra/blas.h>
 
 namespace dpana
 {
   namespace contact
   {
+    namespace
+    {
+      // The lower triangle of C <- C - W^T W (BLAS dsyrk).
+      void
+      subtract_gram(const Eigen::MatrixXd &W, Eigen::MatrixXd &C)
+      {
+        const int n            = static_cast<int>(W.cols()),
+                  k            = static_cast<int>(W.rows());
+        const double minus_one = -1.0, one = 1.0;
+        if (n > 0 && k > 0)
+          dsyrk_(
+            "L", "T", &n, &k, &minus_one, W.data(), &k, &one, C.data(), &n);
+      }
+    } // namespace
+
+
+
     // @sect4{The Newton matrix of solve_active_set}
     //
     // H = Z^T M Z + diag(kappa) over the free directions (see
@@ -80,8 +96,7 @@ namespace dpana
           const Direction &dir = directions[b];
           H(b, b) += (1.0 - dir.lambda) / (dir.lambda * rho[dir.block]);
         }
-      llt.compute(H);
-      return llt.info() == Eigen::Success;
+      return llt.compute(std::move(H));
     }
 
 
@@ -122,8 +137,7 @@ namespace dpana
           for (Eigen::Index b = 0; b < ns; ++b)
             for (Eigen::Index a = 0; a < ns; ++a)
               H(a, b) = M(s_index[a], s_index[b]);
-          llt_stick.compute(H);
-          if (llt_stick.info() != Eigen::Success)
+          if (!llt_stick.compute(std::move(H)))
             return false;
           P.resize(ns, nl);
           for (Eigen::Index b = 0; b < nl; ++b)
@@ -134,12 +148,11 @@ namespace dpana
           // see the empty P).
           if (nl > 0)
             {
-              llt_stick.matrixL().solveInPlace(P);
-              Sigma.selfadjointView<Eigen::Lower>().rankUpdate(P.transpose(),
-                                                               -1.0);
+              llt_stick.solve_lower_in_place(P);
+              subtract_gram(P, Sigma);
               Sigma.triangularView<Eigen::StrictlyUpper>() =
                 Sigma.transpose().eval();
-              llt_stick.matrixU().solveInPlace(P);
+              llt_stick.solve_upper_in_place(P);
             }
         }
       cached_partition = partition;
@@ -189,8 +202,7 @@ namespace dpana
         }
       if (nr > 0)
         {
-          llt_slip.compute(S_slip);
-          return llt_slip.info() == Eigen::Success;
+          return llt_slip.compute(S_slip);
         }
       return true;
     }
@@ -212,7 +224,7 @@ namespace dpana
           Rs.row(position[a]) = R.row(a);
         else
           Rl.row(position[a]) = R.row(a);
-      Eigen::MatrixXd Xs = (ns > 0) ? Eigen::MatrixXd(llt_stick.solve(Rs)) : Rs;
+      Eigen::MatrixXd Xs = (ns > 0) ? llt_stick.solve(Rs) : Rs;
       Eigen::MatrixXd Xl(nr, k);
       if (nr > 0)
         {

@@ -143,15 +143,14 @@ namespace dpana
       for (Eigen::Index c = 0; c < k; ++c)
         for (Eigen::Index a = 0; a < k; ++a)
           Mcc(a, c) = M(index[a], index[c]);
-      llt.compute(Mcc);
-      if (llt.info() != Eigen::Success)
+      if (!llt.compute(Mcc))
         return false;
       if (G.rows() > 0)
         {
           Gc.resize(G.rows(), k);
           for (Eigen::Index a = 0; a < k; ++a)
             Gc.col(a) = G.col(index[a]);
-          Y = llt.solve(Gc.transpose()); // M_CC^{-1} G_C^T
+          Y = llt.solve(Eigen::MatrixXd(Gc.transpose())); // M_CC^{-1} G_C^T
           schur.compute(Gc * Y);
         }
       factored_index = index;
@@ -182,13 +181,13 @@ namespace dpana
         bc[a] = b[index[a]];
       if (G.rows() > 0)
         {
-          const Eigen::VectorXd z  = llt.solve(-bc);
+          const Eigen::VectorXd z  = llt.solve(Eigen::VectorXd(-bc));
           const Eigen::VectorXd rs = Gc * z - e;
           alpha                    = schur.solve(rs);
           x                        = z - Y * alpha;
         }
       else
-        x = llt.solve(-bc);
+        x = llt.solve(Eigen::VectorXd(-bc));
       for (Eigen::Index a = 0; a < k; ++a)
         N[index[a]] = x[a];
       return true;

@@ -34,10 +34,16 @@
 //     interval end, polygon vertex, the radial direction of a disc slip
 //     block, the normal of a facet) have their step outright, the others
 //     (stick, the facet or circle tangent) enter a Cholesky factorisation,
-//     with a Schur complement for the equality rows.
+//     with a Schur complement for the equality rows (dense_cholesky.h: on
+//     the system LAPACK). Warm started (the T-steps of a splitting), the
+//     solve begins with a predictor: one Newton step of the new data on the
+//     partition of the previous solve's last step, kept if it passes the
+//     Armijo test (friction_qp.cc). The line search moves w = M T + c along
+//     the step instead of multiplying by M at every trial point.
 #ifndef dpana_contact_friction_qp_h
 #define dpana_contact_friction_qp_h
 
+#include <dpana/contact/dense_cholesky.h>
 #include <dpana/contact/friction_set.h>
 #include <dpana/contact/normal_lcp.h>
 
@@ -113,6 +119,13 @@ namespace dpana
                   const Eigen::VectorXd &beta,
                   Eigen::VectorXd       &F);
 
+      // The same for the w = M T + c + G^T beta already in place.
+      void
+      natural_map_of_w(const Eigen::VectorXd &radius,
+                       const Eigen::VectorXd &e,
+                       const Eigen::VectorXd &T,
+                       Eigen::VectorXd       &F);
+
       const Eigen::MatrixXd &M;
       const Eigen::MatrixXd &G;
       const FrictionSet     &set;
@@ -147,6 +160,11 @@ namespace dpana
 
       std::string
       newton_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx);
+
+      // The first step of a warm started solve, with the Jacobian of the
+      // last Newton step of the previous solve (friction_qp.cc).
+      bool
+      predictor_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx);
 
       Eigen::VectorXd
       equality_step(const Eigen::VectorXd &violation,
@@ -187,20 +205,23 @@ namespace dpana
       };
       std::vector<Direction> directions;
       std::vector<char>      partition, previous_partition;
-      Eigen::VectorXd        g, x, v; // v = M dT_fixed
-      Eigen::MatrixXd        B;
+      // y, the regions and the radii of the last Newton step (predictor).
+      Eigen::VectorXd  y_last, radius_last;
+      std::vector<int> region_last;
+      Eigen::VectorXd  g, x, v; // v = M dT_fixed
+      Eigen::MatrixXd  B;
       // Direct factorisation: M Z, H, Cholesky of H.
-      Eigen::MatrixXd             MZ, H;
-      Eigen::LLT<Eigen::MatrixXd> llt;
+      Eigen::MatrixXd MZ, H;
+      DenseCholesky   llt;
       // Blocked factorisation: components of the stick and the slip blocks,
       // the first component of each block among them (-1: none), Cholesky
       // of M_ss, P = M_ss^{-1} M_sl and Sigma (kept for cached_partition),
       // the positions of the directions, S and its Cholesky factor.
-      bool                        blocked = false, cache_valid = false;
-      std::vector<char>           cached_partition;
-      std::vector<Eigen::Index>   s_index, l_index, s_start, l_start, position;
-      Eigen::LLT<Eigen::MatrixXd> llt_stick, llt_slip;
-      Eigen::MatrixXd             P, Sigma, S_slip;
+      bool                      blocked = false, cache_valid = false;
+      std::vector<char>         cached_partition;
+      std::vector<Eigen::Index> s_index, l_index, s_start, l_start, position;
+      DenseCholesky             llt_stick, llt_slip;
+      Eigen::MatrixXd           P, Sigma, S_slip;
     };
   } // namespace contact
 } // namespace dpana

@@ -21,13 +21,16 @@
 //     for N = min(0, N - w / diag(M))): the contact set
 //     C = { j : N_j - w_j / M_jj < 0 } is guessed, the equality-constrained
 //     QP on C (N_j = 0 off C, w_j = 0 on C, G N = e) is solved exactly
-//     (Cholesky of M_CC and a Schur complement for alpha), and C is updated
+//     (Cholesky of M_CC on the system LAPACK, dense_cholesky.h, and a Schur
+//     complement for alpha), and C is updated
 //     until it repeats, which gives the exact solution to round-off. A set
 //     that was already visited (cycling, possible for SPD matrices that are
 //     not M-matrices) triggers a few PGS sweeps from the current point before
 //     the active-set steps resume; the number of steps is capped.
 #ifndef dpana_contact_normal_lcp_h
 #define dpana_contact_normal_lcp_h
+
+#include <dpana/contact/dense_cholesky.h>
 
 #include <Eigen/Dense>
 
@@ -128,10 +131,10 @@ namespace dpana
       // Factorisation of the last contact set of solve_active_set (M_CC,
       // and with equality rows M_CC^{-1} G_C^T and the Schur complement),
       // reused while the set repeats.
-      std::vector<Eigen::Index>   factored_index;
-      bool                        factor_valid = false;
-      Eigen::MatrixXd             Mcc, Gc, Y;
-      Eigen::LLT<Eigen::MatrixXd> llt;
+      std::vector<Eigen::Index> factored_index;
+      bool                      factor_valid = false;
+      Eigen::MatrixXd           Mcc, Gc, Y;
+      DenseCholesky             llt;
       Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> schur;
     };
   } // namespace contact

@@ -1,0 +1,199 @@
+#include <dpana/contact/dense_cholesky.h>
+#include <dpana/linear_algebra/blas.h>
+
+#include <climits>
+
+// LAPACK's Cholesky factorisation and solve (Fortran calling convention,
+// column-major storage).
+extern "C"
+{
+  void
+  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+
+  void
+  dpotrs_(const char   *uplo,
+          const int    *n,
+          const int    *nrhs,
+          const double *a,
+          const int    *lda,
+          double       *b,
+          const int    *ldb,
+          int          *info);
+
+  // OpenBLAS' thread count; weak, so that another system BLAS without them
+  // links as well (the calls are then skipped).
+  void
+  openblas_set_num_threads(int) __attribute__((weak));
+  int
+  openblas_get_num_threads() __attribute__((weak));
+}
+
+namespace dpana
+{
+  namespace contact
+  {
+    namespace
+    {
+      int
+      as_int(const Eigen::Index n)
+      {
+        return static_cast<int>(std::min<Eigen::Index>(n, INT_MAX));
+      }
+
+      // OpenBLAS on one thread for the blocks below 1024 rows (restored at
+      // the end of the scope): there the threads' start and synchronisation
+      // cost more than they save, and on a machine with more runnable jobs
+      // than cores a factorisation of a few hundred rows took up to ten
+      // times longer on two threads than on one.
+      class ThreadsForSize
+      {
+      public:
+        explicit ThreadsForSize(const Eigen::Index rows)
+        {
+          if (rows < 1024 && openblas_set_num_threads &&
+              openblas_get_num_threads)
+            {
+              saved = openblas_get_num_threads();
+              if (saved > 1)
+                openblas_set_num_threads(1);
+            }
+        }
+
+        ~ThreadsForSize()
+        {
+          if (saved > 1)
+            openblas_set_num_threads(saved);
+        }
+
+      private:
+        int saved = 0;
+      };
+    } // namespace
+
+
+
+    bool
+    DenseCholesky::compute(const Eigen::MatrixXd &H)
+    {
+      if (H.rows() < small)
+        {
+          factor.resize(0, 0);
+          llt.compute(H);
+          ok = (llt.info() == Eigen::Success);
+          return ok;
+        }
+      factor = H;
+      return factor_in_place();
+    }
+
+
+
+    bool
+    DenseCholesky::compute(Eigen::MatrixXd &&H)
+    {
+      if (H.rows() < small)
+        return compute(static_cast<const Eigen::MatrixXd &>(H));
+      factor = std::move(H);
+      return factor_in_place();
+    }
+
+
+
+    bool
+    DenseCholesky::factor_in_place()
+    {
+      const ThreadsForSize threads(factor.rows());
+      const int            n    = as_int(factor.rows());
+      int                  info = 0;
+      dpotrf_("L", &n, factor.data(), &n, &info);
+      ok = (info == 0);
+      return ok;
+    }
+
+
+
+    void
+    DenseCholesky::solve_in_place(Eigen::MatrixXd &R) const
+    {
+      if (R.size() == 0)
+        return;
+      if (factor.size() == 0)
+        {
+          R = llt.solve(R);
+          return;
+        }
+      const ThreadsForSize threads(factor.rows());
+      const int            n = as_int(factor.rows()), k = as_int(R.cols());
+      int                  info = 0;
+      dpotrs_("L", &n, &k, factor.data(), &n, R.data(), &n, &info);
+    }
+
+
+
+    Eigen::MatrixXd
+    DenseCholesky::solve(const Eigen::MatrixXd &R) const
+    {
+      Eigen::MatrixXd X = R;
+      solve_in_place(X);
+      return X;
+    }
+
+
+
+    Eigen::VectorXd
+    DenseCholesky::solve(const Eigen::VectorXd &r) const
+    {
+      Eigen::MatrixXd X = r;
+      solve_in_place(X);
+      return X.col(0);
+    }
+
+
+
+    void
+    DenseCholesky::solve_lower_in_place(Eigen::MatrixXd &R) const
+    {
+      triangular_solve(R, false);
+    }
+
+
+
+    void
+    DenseCholesky::solve_upper_in_place(Eigen::MatrixXd &R) const
+    {
+      triangular_solve(R, true);
+    }
+
+
+
+    void
+    DenseCholesky::triangular_solve(Eigen::MatrixXd &R,
+                                    const bool       transpose) const
+    {
+      if (R.size() == 0)
+        return;
+      if (factor.size() == 0)
+        {
+          if (transpose)
+            llt.matrixU().solveInPlace(R);
+          else
+            llt.matrixL().solveInPlace(R);
+          return;
+        }
+      const ThreadsForSize threads(factor.rows());
+      const int            n = as_int(factor.rows()), k = as_int(R.cols());
+      const double         one = 1.0;
+      dtrsm_("L",
+             "L",
+             transpose ? "T" : "N",
+             "N",
+             &n,
+             &k,
+             &one,
+             factor.data(),
+             &n,
+             R.data(),
+             &n);
+    }
+  } // namespace contact
+} // namespace dpana

@@ -1,0 +1,71 @@
+// The dense Cholesky factorisation of the active-set solvers
+// (dense_cholesky.h) against Eigen's LLT, an independent implementation, on
+// both sides of the size where it switches from Eigen to LAPACK; and its
+// refusal of a matrix that is not positive definite.
+#include <dpana/contact/dense_cholesky.h>
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+using dpana::contact::DenseCholesky;
+
+namespace
+{
+  Eigen::MatrixXd
+  random_spd(const Eigen::Index size, const unsigned int seed)
+  {
+    std::mt19937                     gen(seed);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    Eigen::MatrixXd                  B(size, size);
+    for (Eigen::Index i = 0; i < size; ++i)
+      for (Eigen::Index j = 0; j < size; ++j)
+        B(i, j) = normal(gen);
+    return B * B.transpose() / size +
+           0.1 * Eigen::MatrixXd::Identity(size, size);
+  }
+} // namespace
+
+
+
+TEST(DenseCholesky, AgreesWithEigenLltOnBothPaths)
+{
+  for (const Eigen::Index size : {5, 63, 64, 200})
+    {
+      const Eigen::MatrixXd            H = random_spd(size, 7 + size);
+      Eigen::MatrixXd                  R(size, 3);
+      std::mt19937                     gen(3);
+      std::normal_distribution<double> normal(0.0, 1.0);
+      for (Eigen::Index i = 0; i < R.size(); ++i)
+        R.data()[i] = normal(gen);
+      const Eigen::LLT<Eigen::MatrixXd> llt(H);
+      DenseCholesky                     chol;
+      ASSERT_TRUE(chol.compute(H)) << size;
+      const Eigen::MatrixXd X = chol.solve(R);
+      EXPECT_LE((X - llt.solve(R)).norm(), 1e-10 * X.norm()) << size;
+      EXPECT_LE((H * X - R).norm(), 1e-10 * R.norm()) << size;
+      // L^{-1} R and L^{-T} R: the triangular factor itself is unique.
+      Eigen::MatrixXd lower = R, upper = R;
+      chol.solve_lower_in_place(lower);
+      chol.solve_upper_in_place(upper);
+      const Eigen::MatrixXd L = llt.matrixL();
+      EXPECT_LE((L * lower - R).norm(), 1e-10 * R.norm()) << size;
+      EXPECT_LE((L.transpose() * upper - R).norm(), 1e-10 * R.norm()) << size;
+      const Eigen::VectorXd x = chol.solve(Eigen::VectorXd(R.col(1)));
+      EXPECT_LE((x - X.col(1)).norm(), 1e-14 * x.norm()) << size;
+    }
+}
+
+
+
+TEST(DenseCholesky, RefusesAnIndefiniteMatrix)
+{
+  for (const Eigen::Index size : {10, 100})
+    {
+      Eigen::MatrixXd H     = random_spd(size, 1);
+      H(size / 2, size / 2) = -1.0;
+      DenseCholesky chol;
+      EXPECT_FALSE(chol.compute(H)) << size;
+      EXPECT_FALSE(chol.valid()) << size;
+    }
+}
