@@ -147,7 +147,15 @@ namespace dpana
           check_memory(analysis);
         });
       cholesky.set_last_block_ordering(parameters.ordering);
-      if (parameters.backend == Backend::mumps)
+      if (parameters.route == parallel::Route::mpi)
+        {
+          parallel::check_ranks(body.name(),
+                                body.triangulation().n_active_cells(),
+                                parallel::n_world_ranks());
+          back_end = std::make_unique<linear_algebra::MumpsSchurFactorization>(
+            MPI_COMM_WORLD);
+        }
+      else if (parameters.backend == Backend::mumps)
         back_end = std::make_unique<linear_algebra::MumpsSchurFactorization>();
       else
         back_end =

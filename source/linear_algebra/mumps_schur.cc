@@ -2,108 +2,37 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
+#include <dpana/base/exceptions.h>
 #include <dpana/linear_algebra/mumps_schur.h>
+#include <dpana/parallel/petsc_calls.h>
 
 #include <deal.II/lac/lapack_templates.h>
 
-#include <cstdlib>
-#include <stdexcept>
 #include <string>
-
-#include <petscmat.h>
 
 namespace dpana
 {
   namespace linear_algebra
   {
-    namespace
-    {
-      // PETSc reports an error by its return code; while this guard lives,
-      // it returns them without printing a traceback.
-      struct QuietPetsc
-      {
-        QuietPetsc()
-        {
-          PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-        }
-        ~QuietPetsc()
-        {
-          PetscPopErrorHandler();
-        }
-      };
-
-      void
-      check(const PetscErrorCode code, const char *call)
-      {
-        if (code != 0)
-          throw std::runtime_error(std::string("MUMPS through PETSc: ") + call +
-                                   " failed (PETSc error " +
-                                   std::to_string(static_cast<int>(code)) +
-                                   ")");
-      }
-
-      // PETSc is initialised by deal.II's MPI_InitFinalize; a program
-      // without it gets PETSc (and MPI) initialised here and finalised at
-      // exit.
-      void
-      ensure_petsc()
-      {
-        PetscBool initialized = PETSC_FALSE;
-        PetscInitialized(&initialized);
-        if (initialized)
-          return;
-        check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
-        std::atexit([]() {
-          PetscBool finalized = PETSC_FALSE;
-          PetscFinalized(&finalized);
-          if (!finalized)
-            PetscFinalize();
-        });
-      }
-
-
-
-      // MatSolve or MatMult of @p M with @p x, on Eigen's storage.
-      Eigen::VectorXd
-      apply(PetscErrorCode (*operation)(Mat, Vec, Vec),
-            const Mat              M,
-            const Eigen::VectorXd &x,
-            const char            *name)
-      {
-        Eigen::VectorXd y(x.size());
-        Vec             vx, vy;
-        check(
-          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, x.size(), x.data(), &vx),
-          "VecCreateSeqWithArray");
-        check(
-          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, y.size(), y.data(), &vy),
-          "VecCreateSeqWithArray");
-        const PetscErrorCode code = operation(M, vx, vy);
-        VecDestroy(&vx);
-        VecDestroy(&vy);
-        check(code, name);
-        return y;
-      }
-
-
-
-      // MUMPS' INFOG(i) of the factor @p F, -1 without a factor.
-      int
-      infog(const Mat F, const int i)
-      {
-        PetscInt value = -1;
-        if (F)
-          MatMumpsGetInfog(F, i, &value);
-        return value;
-      }
-    } // namespace
+    using parallel::check;
+    using parallel::infog;
+    using parallel::QuietPetsc;
 
 
 
     struct MumpsSchurFactorization::Impl
     {
-      Mat K = nullptr;
-      Mat F = nullptr;
+      explicit Impl(const MPI_Comm communicator)
+        : communicator(communicator)
+      {
+        MPI_Comm_rank(communicator, &rank);
+      }
+
+      MPI_Comm           communicator;
+      int                rank = 0;
+      parallel::RowRange rows;
+      Mat                K = nullptr;
+      Mat                F = nullptr;
 
       dealii::AffineConstraints<double> constraints, homogeneous;
       std::vector<unsigned int>         free;
@@ -128,6 +57,10 @@ namespace dpana
                       const std::vector<unsigned int> &gamma_dofs);
       void
       create_matrix(const dealii::SparseMatrix<double> &K_full);
+      void
+      insert_distributed(const std::vector<PetscInt>    &row_start,
+                         const std::vector<PetscInt>    &columns,
+                         const std::vector<PetscScalar> &values);
       void
       factor_interior();
       void
@@ -187,18 +120,22 @@ namespace dpana
 
 
 
-    // The upper triangle of K_r in compressed rows. A row of a deal.II
-    // SparseMatrix holds its diagonal first and then the other columns in
-    // increasing order, so the kept columns are in increasing order.
+    // The upper triangle of the rows of K_r this rank owns, in compressed
+    // rows with global column indices. A row of a deal.II SparseMatrix holds
+    // its diagonal first and then the other columns in increasing order, so
+    // the kept columns are in increasing order. On one rank the matrix is
+    // sequential (MATSBAIJ becomes MATSEQSBAIJ), on several distributed by
+    // contiguous blocks of rows (MATMPISBAIJ).
     void
     MumpsSchurFactorization::Impl::create_matrix(
       const dealii::SparseMatrix<double> &K_full)
     {
+      rows = parallel::RowRange(communicator, free.size());
       std::vector<PetscInt>    row_start(1, 0), columns;
       std::vector<PetscScalar> values;
-      for (const unsigned int i : free)
+      for (PetscInt r = rows.begin; r < rows.end; ++r)
         {
-          const int r = reduced_index[i];
+          const unsigned int i = free[r];
           for (auto it = K_full.begin(i); it != K_full.end(i); ++it)
             {
               const int c = reduced_index[it->column()];
@@ -210,14 +147,52 @@ namespace dpana
             }
           row_start.push_back(columns.size());
         }
-      const PetscInt n = free.size();
-      check(MatCreate(PETSC_COMM_SELF, &K), "MatCreate");
-      check(MatSetSizes(K, n, n, n, n), "MatSetSizes");
-      check(MatSetType(K, MATSEQSBAIJ), "MatSetType");
-      check(MatSeqSBAIJSetPreallocationCSR(
-              K, 1, row_start.data(), columns.data(), values.data()),
-            "MatSeqSBAIJSetPreallocationCSR");
+      const PetscInt n = rows.n, n_local = rows.n_local();
+      check(MatCreate(communicator, &K), "MatCreate");
+      check(MatSetSizes(K, n_local, n_local, n, n), "MatSetSizes");
+      check(MatSetType(K, MATSBAIJ), "MatSetType");
+      if (rows.counts.size() > 1)
+        insert_distributed(row_start, columns, values);
+      else
+        check(MatSeqSBAIJSetPreallocationCSR(
+                K, 1, row_start.data(), columns.data(), values.data()),
+              "MatSeqSBAIJSetPreallocationCSR");
       check(MatSetOption(K, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");
+    }
+
+
+
+    // The rows of this rank into the distributed matrix, preallocated by
+    // the counts of their columns in the diagonal block (those this rank
+    // owns) and right of it.
+    void
+    MumpsSchurFactorization::Impl::insert_distributed(
+      const std::vector<PetscInt>    &row_start,
+      const std::vector<PetscInt>    &columns,
+      const std::vector<PetscScalar> &values)
+    {
+      const PetscInt        n_local = rows.n_local();
+      std::vector<PetscInt> diagonal(n_local, 0), off_diagonal(n_local, 0);
+      for (PetscInt r = 0; r < n_local; ++r)
+        for (PetscInt k = row_start[r]; k < row_start[r + 1]; ++k)
+          ++(columns[k] < rows.end ? diagonal[r] : off_diagonal[r]);
+      check(MatMPISBAIJSetPreallocation(
+              K, 1, 0, diagonal.data(), 0, off_diagonal.data()),
+            "MatMPISBAIJSetPreallocation");
+      for (PetscInt r = 0; r < n_local; ++r)
+        {
+          const PetscInt row = rows.begin + r;
+          check(MatSetValues(K,
+                             1,
+                             &row,
+                             row_start[r + 1] - row_start[r],
+                             columns.data() + row_start[r],
+                             values.data() + row_start[r],
+                             INSERT_VALUES),
+                "MatSetValues");
+        }
+      check(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+      check(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
     }
 
 
@@ -232,14 +207,17 @@ namespace dpana
     {
       check(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F),
             "MatGetFactor(MATSOLVERMUMPS)");
-      AssertThrow(F != nullptr,
-                  dealii::ExcMessage("MumpsSchurFactorization: this PETSc "
-                                     "has no MUMPS."));
+      if (F == nullptr)
+        throw InputError("this PETSc has no MUMPS (MatGetFactor); "
+                         "Contact / Factorisation back end = mumps and the "
+                         "MPI route need a PETSc configured with MUMPS");
+      // MUMPS computes a centralised Schur complement on rank 0: there the
+      // index set lists all the unknowns of Gamma, on the other ranks none.
       if (!gamma.empty())
         {
           IS is;
-          check(ISCreateGeneral(PETSC_COMM_SELF,
-                                gamma.size(),
+          check(ISCreateGeneral(communicator,
+                                rank == 0 ? gamma.size() : 0,
                                 gamma.data(),
                                 PETSC_COPY_VALUES,
                                 &is),
@@ -271,8 +249,9 @@ namespace dpana
 
 
 
-    // S as MUMPS returns it (dense, column-major, both triangles), copied
-    // and factored: its lower triangle becomes L_S.
+    // S as MUMPS returns it on rank 0 (dense, column-major, one triangle),
+    // copied and factored there: its lower triangle becomes L_S,
+    // which rank 0 then sends to the other ranks.
     void
     MumpsSchurFactorization::Impl::factor_schur_complement()
     {
@@ -284,19 +263,28 @@ namespace dpana
       MatFactorSchurStatus status;
       check(MatFactorGetSchurComplement(F, &S, &status),
             "MatFactorGetSchurComplement");
-      const PetscScalar *values;
-      PetscInt           lda = 0;
-      check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
-      check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
-      for (dealii::types::blas_int j = 0; j < n; ++j)
-        for (dealii::types::blas_int i = j; i < n; ++i)
-          L(i, j) = values[i + j * lda];
-      MatDenseRestoreArrayRead(S, &values);
-      MatFactorRestoreSchurComplement(F, &S, status);
-
-      L.triangularView<Eigen::StrictlyUpper>().setZero();
       dealii::types::blas_int info = 0;
-      dealii::potrf("L", &n, L.data(), &n, &info);
+      if (rank == 0)
+        {
+          const PetscScalar *values;
+          PetscInt           lda = 0;
+          check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
+          check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
+          for (dealii::types::blas_int j = 0; j < n; ++j)
+            for (dealii::types::blas_int i = 0; i < n; ++i)
+              L(i, j) = values[i + j * lda];
+          MatDenseRestoreArrayRead(S, &values);
+          // One process returns the lower triangle, several the upper.
+          if (L.triangularView<Eigen::StrictlyLower>().toDenseMatrix().isZero(
+                0.0))
+            L = L.transpose().eval();
+          L.triangularView<Eigen::StrictlyUpper>().setZero();
+          dealii::potrf("L", &n, L.data(), &n, &info);
+        }
+      MatFactorRestoreSchurComplement(F, &S, status);
+      MPI_Bcast(&info, 1, MPI_INT, 0, communicator);
+      if (info == 0)
+        MPI_Bcast(L.data(), n * n, MPI_DOUBLE, 0, communicator);
       if (info != 0)
         throw NotPositiveDefiniteError(
           "the Schur complement on the contact surface (" + std::to_string(n) +
@@ -311,7 +299,7 @@ namespace dpana
     MumpsSchurFactorization::Impl::solve_interior(
       const Eigen::VectorXd &b) const
     {
-      Eigen::VectorXd y = apply(MatSolve, F, b, "MatSolve");
+      Eigen::VectorXd y = parallel::apply(MatSolve, F, rows, b, "MatSolve");
       for (const PetscInt k : gamma)
         y(k) = 0.0;
       return y;
@@ -322,13 +310,14 @@ namespace dpana
     Eigen::VectorXd
     MumpsSchurFactorization::Impl::multiply(const Eigen::VectorXd &x) const
     {
-      return apply(MatMult, K, x, "MatMult");
+      return parallel::apply(MatMult, K, rows, x, "MatMult");
     }
 
 
 
-    MumpsSchurFactorization::MumpsSchurFactorization()
-      : impl(std::make_unique<Impl>())
+    MumpsSchurFactorization::MumpsSchurFactorization(
+      const MPI_Comm communicator)
+      : impl(std::make_unique<Impl>(communicator))
     {
     }
 
@@ -348,7 +337,7 @@ namespace dpana
       const std::vector<unsigned int>         &gamma_dofs)
     {
       AssertThrow(K.m() == K.n(), dealii::ExcNotQuadratic());
-      ensure_petsc();
+      parallel::ensure_petsc();
       const QuietPetsc quiet;
       impl->destroy();
       impl->copy_constraints(constraints);
@@ -490,6 +479,46 @@ namespace dpana
     MumpsSchurFactorization::factor_memory_mb() const
     {
       return infog(impl->F, 22);
+    }
+
+
+
+    unsigned int
+    MumpsSchurFactorization::n_ranks() const
+    {
+      return impl->rows.counts.size();
+    }
+
+
+
+    MumpsSchurFactorization::Statistics
+    MumpsSchurFactorization::statistics() const
+    {
+      Statistics s;
+      s.flops              = parallel::rinfog(impl->F, 3);
+      s.estimated_max_mb   = infog(impl->F, 16);
+      s.estimated_total_mb = infog(impl->F, 17);
+      s.used_max_mb        = infog(impl->F, 21);
+      s.used_total_mb      = infog(impl->F, 22);
+      s.factor_entries     = infog(impl->F, 29);
+      s.schur_size         = impl->gamma.size();
+      return s;
+    }
+
+
+
+    std::string
+    MumpsSchurFactorization::Statistics::describe() const
+    {
+      const auto gflops = std::to_string(flops / 1e9);
+      return gflops.substr(0, gflops.find('.') + 3) +
+             " Gflop, memory estimated " + std::to_string(estimated_total_mb) +
+             " MB (at most " + std::to_string(estimated_max_mb) +
+             " MB on one rank), used " + std::to_string(used_total_mb) +
+             " MB (at most " + std::to_string(used_max_mb) +
+             " MB on one rank), " + std::to_string(factor_entries) +
+             " factor entries, Schur complement of " +
+             std::to_string(schur_size) + " unknowns";
     }
   } // namespace linear_algebra
 } // namespace dpana

@@ -8,6 +8,8 @@
 
 #include <memory>
 
+#include <mpi.h>
+
 namespace dpana
 {
   namespace linear_algebra
@@ -52,15 +54,38 @@ namespace dpana
      * PETSc must be initialised before the first factorize(): deal.II's
      * Utilities::MPI::MPI_InitFinalize does so, and where no one has,
      * factorize() initialises it itself (PetscInitializeNoArguments) and
-     * finalises it at exit. The matrices live on PETSC_COMM_SELF. Errors of
+     * finalises it at exit. Errors of
      * PETSc are returned, not printed, and thrown as exceptions; a pivot
      * of MUMPS that is not positive, or a Schur complement that is not, is
      * a NotPositiveDefiniteError as for SparseCholesky.
+     *
+     * <h3>Over MPI</h3>
+     *
+     * The factorisation lives on the communicator given to the constructor.
+     * On one rank (MPI_COMM_SELF, the serial route) the matrix is
+     * sequential. On several (the MPI route, doc/parallel.md) every rank
+     * calls every function with the same arguments (the body and its
+     * reduced matrix are known on every rank) and inserts only the rows of
+     * $K_r$ it owns, a contiguous block as PETSc splits them, into a
+     * distributed matrix (MATMPISBAIJ); MUMPS analyses, factors and solves
+     * over all ranks. Its Schur complement is centralised: $S$ is returned
+     * on rank 0 only (the index set of $\Gamma$ is empty on the other
+     * ranks), factored there, and $L_S$ is broadcast, so that
+     * solve_schur_factor() is the same local triangular solve on every rank.
+     * The interior solves are distributed (MatSolve on distributed vectors,
+     * ICNTL(26) = 0); their results are gathered on every rank, so solve()
+     * and solve_condensed() return the full vector everywhere.
      */
     class MumpsSchurFactorization : public SchurFactorization
     {
     public:
-      MumpsSchurFactorization();
+      /**
+       * A factorisation over the ranks of @p communicator (MPI_COMM_SELF:
+       * one process; MPI_COMM_WORLD: the MPI route). Every function is then
+       * collective on it.
+       */
+      explicit MumpsSchurFactorization(
+        const MPI_Comm communicator = MPI_COMM_SELF);
       ~MumpsSchurFactorization() override;
       MumpsSchurFactorization(const MumpsSchurFactorization &) = delete;
       MumpsSchurFactorization &
@@ -105,6 +130,41 @@ namespace dpana
       ordering() const;
       int
       factor_memory_mb() const;
+
+      /**
+       * The number of ranks of the factorisation.
+       */
+      unsigned int
+      n_ranks() const;
+
+      /**
+       * What MUMPS reports of its factorisation (the same on every rank):
+       * the flops of the elimination (RINFOG(3)), the memory its analysis
+       * estimated (INFOG(16): the largest of one rank, INFOG(17): the sum
+       * over the ranks, in MB) and that the factorisation used (INFOG(21),
+       * INFOG(22)), the entries of the factors (INFOG(29)) and the order of
+       * the Schur complement. The inputs of the cost model of
+       * benchmarks/parallel.
+       */
+      struct Statistics
+      {
+        double       flops              = 0;
+        long         estimated_max_mb   = 0;
+        long         estimated_total_mb = 0;
+        long         used_max_mb        = 0;
+        long         used_total_mb      = 0;
+        long         factor_entries     = 0;
+        unsigned int schur_size         = 0;
+
+        /**
+         * One line for the log.
+         */
+        std::string
+        describe() const;
+      };
+
+      Statistics
+      statistics() const;
 
     private:
       /**
