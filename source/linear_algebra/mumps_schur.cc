@@ -274,9 +274,11 @@ namespace dpana
             for (dealii::types::blas_int i = 0; i < n; ++i)
               L(i, j) = values[i + j * lda];
           MatDenseRestoreArrayRead(S, &values);
-          // One process returns the lower triangle, several the upper.
-          if (L.triangularView<Eigen::StrictlyLower>().toDenseMatrix().isZero(
-                0.0))
+          // The triangle that holds S: on one process the lower one; on
+          // several MUMPS returns the lower triangle by rows, which the
+          // column-major array holds as its upper one (the rest of the
+          // array is not set).
+          if (rows.counts.size() > 1)
             L = L.transpose().eval();
           L.triangularView<Eigen::StrictlyUpper>().setZero();
           dealii::potrf("L", &n, L.data(), &n, &info);
