@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/lapack_templates.h>
 
+#include <algorithm>
 #include <string>
 
 namespace dpana
@@ -20,6 +21,28 @@ namespace dpana
 
 
 
+    namespace
+    {
+      // What MUMPS reports of the factor F, after its analysis or its
+      // factorisation.
+      MumpsSchurFactorization::Statistics
+      statistics_of(const Mat F, const unsigned int schur_size)
+      {
+        MumpsSchurFactorization::Statistics s;
+        s.flops                    = parallel::rinfog(F, 3);
+        s.estimated_max_mb         = infog(F, 16);
+        s.estimated_total_mb       = infog(F, 17);
+        s.estimated_factor_entries = infog(F, 20);
+        s.used_max_mb              = infog(F, 21);
+        s.used_total_mb            = infog(F, 22);
+        s.factor_entries           = infog(F, 29);
+        s.schur_size               = schur_size;
+        return s;
+      }
+    } // namespace
+
+
+
     struct MumpsSchurFactorization::Impl
     {
       explicit Impl(const MPI_Comm communicator)
@@ -28,11 +51,12 @@ namespace dpana
         MPI_Comm_rank(communicator, &rank);
       }
 
-      MPI_Comm           communicator;
-      int                rank = 0;
-      parallel::RowRange rows;
-      Mat                K = nullptr;
-      Mat                F = nullptr;
+      MPI_Comm                                communicator;
+      std::function<void(const Statistics &)> analysis_check;
+      int                                     rank = 0;
+      parallel::RowRange                      rows;
+      Mat                                     K = nullptr;
+      Mat                                     F = nullptr;
 
       dealii::AffineConstraints<double> constraints, homogeneous;
       std::vector<unsigned int>         free;
@@ -63,6 +87,8 @@ namespace dpana
                          const std::vector<PetscScalar> &values);
       void
       factor_interior();
+      PetscInt
+      try_factor(const PetscInt relaxation);
       void
       factor_schur_complement();
 
@@ -201,9 +227,45 @@ namespace dpana
     // MUMPS as INFOG(1) < 0, which PETSc returns either as an error of the
     // numeric factorisation or as a factor error; a negative one is only
     // counted (INFOG(12)), the factorisation of a symmetric positive
-    // definite matrix (MUMPS' SYM = 1) going on without pivoting.
+    // definite matrix (MUMPS' SYM = 1) going on without pivoting. A
+    // workspace that its analysis estimated too small (INFOG(1) = -8, -9,
+    // -11, -12, -14, -15; it happens on several ranks) is enlarged: the
+    // factorisation is made again with twice the relaxation ICNTL(14) of
+    // the estimate, up to three times.
     void
     MumpsSchurFactorization::Impl::factor_interior()
+    {
+      PetscInt relaxation = 0;
+      for (unsigned int attempt = 0;; ++attempt)
+        {
+          const PetscInt status    = try_factor(relaxation);
+          const bool     workspace = status == -8 || status == -9 ||
+                                 status == -11 || status == -12 ||
+                                 status == -14 || status == -15;
+          if (status == 0)
+            break;
+          if (!workspace || attempt == 3)
+            throw NotPositiveDefiniteError(
+              "MUMPS' Cholesky factorisation failed (INFOG(1) = " +
+              std::to_string(status) + ") on a matrix of " +
+              std::to_string(free.size()) +
+              " unknowns: it is not positive definite; a stiffness matrix is "
+              "singular when the body is not held against rigid motions");
+          MatMumpsGetIcntl(F, 14, &relaxation);
+          relaxation = 2 * std::max<PetscInt>(relaxation, 20);
+          MatDestroy(&F);
+        }
+      // Later solves with F are solves with K_II only.
+      check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+    }
+
+
+
+    // One analysis and factorisation, with the memory relaxation
+    // ICNTL(14) = @p relaxation if it is positive; MUMPS' INFOG(1), or -10
+    // (MUMPS' code of a singular matrix) for a negative pivot.
+    PetscInt
+    MumpsSchurFactorization::Impl::try_factor(const PetscInt relaxation)
     {
       check(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F),
             "MatGetFactor(MATSOLVERMUMPS)");
@@ -211,6 +273,8 @@ namespace dpana
         throw InputError("this PETSc has no MUMPS (MatGetFactor); "
                          "Contact / Factorisation back end = mumps and the "
                          "MPI route need a PETSc configured with MUMPS");
+      if (relaxation > 0)
+        check(MatMumpsSetIcntl(F, 14, relaxation), "MatMumpsSetIcntl(14)");
       // MUMPS computes a centralised Schur complement on rank 0: there the
       // index set lists all the unknowns of Gamma, on the other ranks none.
       if (!gamma.empty())
@@ -229,22 +293,19 @@ namespace dpana
       check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
       check(MatCholeskyFactorSymbolic(F, K, nullptr, &info),
             "MatCholeskyFactorSymbolic");
+      if (analysis_check)
+        analysis_check(statistics_of(F, gamma.size()));
       const PetscErrorCode code  = MatCholeskyFactorNumeric(F, K, &info);
       MatFactorError       error = MAT_FACTOR_NOERROR;
       MatFactorGetError(F, &error);
       PetscInt status = 0, negative = 0;
       MatMumpsGetInfog(F, 1, &status);
       MatMumpsGetInfog(F, 12, &negative);
-      if (code != 0 || error != MAT_FACTOR_NOERROR || status < 0 ||
-          negative > 0)
-        throw NotPositiveDefiniteError(
-          "MUMPS' Cholesky factorisation failed (INFOG(1) = " +
-          std::to_string(status) + ") on a matrix of " +
-          std::to_string(free.size()) +
-          " unknowns: it is not positive definite; a stiffness matrix is "
-          "singular when the body is not held against rigid motions");
-      // Later solves with F are solves with K_II only.
-      check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+      if (negative > 0)
+        return -10;
+      if (status == 0 && (code != 0 || error != MAT_FACTOR_NOERROR))
+        return -1;
+      return status;
     }
 
 
@@ -493,18 +554,19 @@ namespace dpana
 
 
 
+    void
+    MumpsSchurFactorization::set_analysis_check(
+      const std::function<void(const Statistics &)> &check)
+    {
+      impl->analysis_check = check;
+    }
+
+
+
     MumpsSchurFactorization::Statistics
     MumpsSchurFactorization::statistics() const
     {
-      Statistics s;
-      s.flops              = parallel::rinfog(impl->F, 3);
-      s.estimated_max_mb   = infog(impl->F, 16);
-      s.estimated_total_mb = infog(impl->F, 17);
-      s.used_max_mb        = infog(impl->F, 21);
-      s.used_total_mb      = infog(impl->F, 22);
-      s.factor_entries     = infog(impl->F, 29);
-      s.schur_size         = impl->gamma.size();
-      return s;
+      return statistics_of(impl->F, impl->gamma.size());
     }
 
 

@@ -6,6 +6,7 @@
 
 #include <dpana/linear_algebra/schur_factorization.h>
 
+#include <functional>
 #include <memory>
 
 #include <mpi.h>
@@ -142,19 +143,22 @@ namespace dpana
        * the flops of the elimination (RINFOG(3)), the memory its analysis
        * estimated (INFOG(16): the largest of one rank, INFOG(17): the sum
        * over the ranks, in MB) and that the factorisation used (INFOG(21),
-       * INFOG(22)), the entries of the factors (INFOG(29)) and the order of
-       * the Schur complement. The inputs of the cost model of
-       * benchmarks/parallel.
+       * INFOG(22)), the entries of the factors its analysis estimated
+       * (INFOG(20)) and that it made (INFOG(29)), and the order of the
+       * Schur complement. The inputs of the cost model of
+       * benchmarks/parallel. After the analysis only the flops, the
+       * estimates and the order are set (the others are 0 or -1).
        */
       struct Statistics
       {
-        double       flops              = 0;
-        long         estimated_max_mb   = 0;
-        long         estimated_total_mb = 0;
-        long         used_max_mb        = 0;
-        long         used_total_mb      = 0;
-        long         factor_entries     = 0;
-        unsigned int schur_size         = 0;
+        double       flops                    = 0;
+        long         estimated_max_mb         = 0;
+        long         estimated_total_mb       = 0;
+        long         used_max_mb              = 0;
+        long         used_total_mb            = 0;
+        long         estimated_factor_entries = 0;
+        long         factor_entries           = 0;
+        unsigned int schur_size               = 0;
 
         /**
          * One line for the log.
@@ -165,6 +169,16 @@ namespace dpana
 
       Statistics
       statistics() const;
+
+      /**
+       * A function that factorize() calls between MUMPS' analysis and its
+       * numerical factorisation with the Statistics of the analysis (its
+       * estimates of the flops and of the memory, the same on every rank),
+       * e.g. to refuse a factorisation that would not fit by throwing
+       * (on every rank alike). None by default.
+       */
+      void
+      set_analysis_check(const std::function<void(const Statistics &)> &check);
 
     private:
       /**
