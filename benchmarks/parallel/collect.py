@@ -34,8 +34,15 @@ def row_of(run):
         row["t " + p] = summary["timings"].get(p, 0.0)
         row["mb " + p] = summary["peak_memory_mb"].get(p, 0.0)
     row["total"] = sum(summary["timings"].values())
-    peaks = [int(x) / 1024 for x in re.findall(
-        r"rank peak kB (\d+)", open(os.path.join(run, "stderr.txt")).read())]
+    ranks = re.findall(
+        r"rank peak kB (\d+) user ([\d.]+) system ([\d.]+) wall ([\d.]+)",
+        open(os.path.join(run, "stderr.txt")).read())
+    peaks = [int(r[0]) / 1024 for r in ranks]
+    # The CPU time of every rank against its wall time: the cores the run
+    # had (a loaded machine gives a second rank less than a second core).
+    row["cpu_s"] = sum(float(r[1]) + float(r[2]) for r in ranks)
+    row["wall_s"] = max([float(r[3]) for r in ranks] or [0])
+    row["cores_used"] = row["cpu_s"] / row["wall_s"] if row["wall_s"] else 0
     row["rank_peaks_mb"] = " ".join("%.0f" % p for p in peaks)
     row["max_rank_peak_mb"] = max(peaks) if peaks else 0
     row["sum_rank_peak_mb"] = sum(peaks)
@@ -64,15 +71,15 @@ def main():
     with open(os.path.join(out, "results.md"), "w") as f:
         f.write("| scene | np | dofs | n_c | n_Γ | " +
                 " | ".join(p + " [s]" for p in PHASES) +
-                " | total [s] | peak per rank [MB] | MUMPS Gflop | MUMPS "
+                " | total [s] | CPU [s] / wall [s] | peak per rank [MB] | MUMPS Gflop | MUMPS "
                 "memory est./used, total [MB] | load |\n")
-        f.write("|---" * (len(PHASES) + 10) + "|\n")
+        f.write("|---" * (len(PHASES) + 11) + "|\n")
         for r in rows:
             f.write("| %s | %d | %d | %d | %d | " % (
                 r["scene"], r["np"], r["dofs"], r["n_c"], r["n_gamma"]) +
                 " | ".join("%.3g" % r["t " + p] for p in PHASES) +
-                " | %.3g | %s | %.3g | %d / %d | %s |\n" % (
-                    r["total"], r["rank_peaks_mb"], r["gflop"],
+                " | %.3g | %.3g / %.3g | %s | %.3g | %d / %d | %s |\n" % (
+                    r["total"], r["cpu_s"], r["wall_s"], r["rank_peaks_mb"], r["gflop"],
                     r["mumps_est_total_mb"], r["mumps_used_total_mb"],
                     r["load"]))
 

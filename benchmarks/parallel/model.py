@@ -6,9 +6,10 @@ of 1e7 dofs with 1e4 contact unknowns on 16, 64 and 256 ranks
 
 - factorisation: MUMPS' flops F(N) = F_0 (N / N_0)^2 (nested dissection of
   a 3D mesh, George 1973; the exponent fitted to the measured flops is
-  printed next to it) at the measured rate of one rank, divided over P
-  ranks with the parallel fraction measured between np = 1 and np = 2
-  (Amdahl: t(P) = t(1) (s + (1 - s) / P));
+  printed next to it) at the measured rate r_1 of one rank, divided over P
+  ranks with a parallel efficiency e: t(P) = F / (r_1 P e), once with the
+  efficiency measured between np = 1 and np = 2, e = t(1) / (2 t(2)), and
+  once with e = 1 (the bound);
 - factor memory: MUMPS' estimate (INFOG(17)) ~ N^(4/3) (factor entries of
   nested dissection in 3D), divided over P ranks with the imbalance of the
   run on 2 ranks (INFOG(16) x P / INFOG(17));
@@ -66,9 +67,8 @@ def fit(rows):
                                         N0, big["mumps_est_total_mb"])
     m["fact_rate"] = m["flops0"] / big["t factorization"]
     b2 = two.get(N0)
-    # Amdahl's serial fraction from t(1) and t(2) of the largest size.
-    s = 2 * b2["t factorization"] / big["t factorization"] - 1 if b2 else 1
-    m["serial_fraction"] = min(max(s, 0.0), 1.0)
+    m["efficiency"] = (big["t factorization"] / (2 * b2["t factorization"])
+                       if b2 else 1.0)
     m["mem0_mb"] = big["mumps_est_total_mb"]
     m["imbalance"] = (2 * b2["mumps_est_max_mb"] / b2["mumps_est_total_mb"]
                       if b2 and b2["mumps_est_total_mb"] > 0 else 1.0)
@@ -87,19 +87,18 @@ def fit(rows):
     return m
 
 
-def predict(m, N, nc, P):
+def predict(m, N, nc, P, efficiency):
     nG = nc * m["nG0"] / m["nc0"]
-    s = m["serial_fraction"]
-    amdahl = s + (1 - s) / P
+    share = 1 / (P * efficiency)
     F = m["flops0"] * (N / m["N0"]) ** 2
     t = {}
     t["assembly"] = m["asm_rate"] * N
-    t["factorization"] = F / m["fact_rate"] * amdahl + nG ** 3 / 3 / m[
+    t["factorization"] = F / m["fact_rate"] * share + nG ** 3 / 3 / m[
         "dense_rate"]
     t["condensation"] = (nG ** 2 * nc + nG * nc ** 2) / m["dense_rate"]
     t["contact solve"] = m["solve0"] * (nc / m["nc0"]) ** m["solve_exponent"]
     entries = m["entries0"] * (N / m["N0"]) ** (4 / 3)
-    t["recovery"] = 4 * entries / m["recovery_rate"] * amdahl
+    t["recovery"] = 4 * entries / m["recovery_rate"] * share
     factor_mb = m["mem0_mb"] * (N / m["N0"]) ** (4 / 3) / P * m["imbalance"]
     dense_mb = 8 * (2 * nG ** 2 + nG * nc + nc ** 2) / 2 ** 20
     mesh_mb = m["base_mb"] + m["asm_mb_per_dof"] * N
@@ -117,19 +116,19 @@ def main():
              "n_Γ = %d):" % (m["N0"], m["nc0"], m["nG0"]), "",
              "| quantity | value |", "|---|---|"]
     for k in ["flops0", "flop_exponent_fitted", "mem0_mb",
-              "mem_exponent_fitted", "fact_rate", "serial_fraction",
+              "mem_exponent_fitted", "fact_rate", "efficiency",
               "imbalance", "dense_rate", "solve0", "solve_exponent",
               "asm_rate", "asm_mb_per_dof", "base_mb", "recovery_rate"]:
         lines.append("| %s | %.4g |" % (k, m[k]))
     lines += ["", "Prediction for a 3D body of %.0e dofs with %.0e contact "
               "unknowns (times in s, memory in GB):" % (TARGET_N, TARGET_NC),
-              "", "| ranks | assembly | factorization | condensation | "
+              "", "| ranks | e | assembly | factorization | condensation | "
               "contact solve | recovery | factor per rank | dense on every "
               "rank | mesh and K on every rank | total per rank |",
-              "|---|---|---|---|---|---|---|---|---|---|"]
-    for P in RANKS:
-        t, mem = predict(m, TARGET_N, TARGET_NC, P)
-        lines.append("| %d | " % P + " | ".join(
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for P, e in [(P, e) for e in [m["efficiency"], 1.0] for P in RANKS]:
+        t, mem = predict(m, TARGET_N, TARGET_NC, P, e)
+        lines.append("| %d | %.2f | " % (P, e) + " | ".join(
             "%.3g" % t[k] for k in ["assembly", "factorization",
                                     "condensation", "contact solve",
                                     "recovery"]) + " | " + " | ".join(
@@ -140,16 +139,16 @@ def main():
     # factorisation on 256 ranks, and where the dense blocks outgrow 64 GB.
     nc = 1000.0
     while nc < 1e6:
-        t, mem = predict(m, TARGET_N, nc, 256)
+        t, mem = predict(m, TARGET_N, nc, 256, 1.0)
         if t["condensation"] + t["contact solve"] > t["factorization"]:
             break
         nc *= 1.1
-    lines += ["", "On 256 ranks and 1e7 dofs the serial dense work (A and "
-              "the contact solve) overtakes the factorisation at n_c ≈ "
-              "%.2g." % nc]
+    lines += ["", "On 256 ranks (e = 1) and 1e7 dofs the serial dense work "
+              "(A and the contact solve) overtakes the factorisation at "
+              "n_c ≈ %.2g." % nc]
     nc = 1000.0
     while nc < 1e7:
-        _, mem = predict(m, TARGET_N, nc, 256)
+        _, mem = predict(m, TARGET_N, nc, 256, 1.0)
         if mem["dense on every rank"] > 64 * 1024:
             break
         nc *= 1.1

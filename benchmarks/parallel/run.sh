@@ -50,7 +50,7 @@ for size in $sizes; do
     else
       launcher="$mpiexec -x OMP_NUM_THREADS -x OPENBLAS_NUM_THREADS -np $np"
     fi
-    (cd "$run" && $launcher /usr/bin/time -f "rank peak kB %M" \
+    (cd "$run" && $launcher /usr/bin/time -f "rank peak kB %M user %U system %S wall %e" \
         "$dpana" scene.prm > stdout.txt 2> stderr.txt) ||
       echo "run $run failed (see $run/stderr.txt)"
     cat /proc/loadavg > "$run/load_after.txt"
