@@ -11,12 +11,15 @@
 #
 #   benchmarks/parallel/run.sh [--quick] [DPANA]
 #
-# --quick: the smallest size only. DPANA defaults to build/dpana; PYTHON
+# SIZES="m1xh1 m2xh2 ..." and NPS="1 2" choose other sizes (m x h x m
+# subdivisions) and rank counts; the runs already in the work folder stay
+# in the table. --quick: the smallest size only. DPANA defaults to build/dpana; PYTHON
 # (default python3) must have matplotlib for the plot.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-sizes="16x40 24x56"
+sizes=${SIZES:-"16x40 24x56"}
+nps=${NPS:-"1 2"}
 if [ "${1:-}" = "--quick" ]; then
   sizes="12x24"
   shift
@@ -36,7 +39,7 @@ mkdir -p "$work"
 for size in $sizes; do
   m=${size%x*}
   h=${size#*x}
-  for np in 1 2; do
+  for np in $nps; do
     run="$work/receding_${m}x${h}x${m}_np$np"
     rm -rf "$run"
     mkdir -p "$run"
