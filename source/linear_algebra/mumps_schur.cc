@@ -29,6 +29,7 @@ namespace dpana
       statistics_of(const Mat F, const unsigned int schur_size)
       {
         MumpsSchurFactorization::Statistics s;
+        s.estimated_flops          = parallel::rinfog(F, 1);
         s.flops                    = parallel::rinfog(F, 3);
         s.estimated_max_mb         = infog(F, 16);
         s.estimated_total_mb       = infog(F, 17);

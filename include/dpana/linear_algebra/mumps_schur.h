@@ -140,17 +140,19 @@ namespace dpana
 
       /**
        * What MUMPS reports of its factorisation (the same on every rank):
-       * the flops of the elimination (RINFOG(3)), the memory its analysis
+       * the flops of the elimination its analysis estimated (RINFOG(1))
+       * and that it made (RINFOG(3)), the memory its analysis
        * estimated (INFOG(16): the largest of one rank, INFOG(17): the sum
        * over the ranks, in MB) and that the factorisation used (INFOG(21),
        * INFOG(22)), the entries of the factors its analysis estimated
        * (INFOG(20)) and that it made (INFOG(29)), and the order of the
        * Schur complement. The inputs of the cost model of
-       * benchmarks/parallel. After the analysis only the flops, the
-       * estimates and the order are set (the others are 0 or -1).
+       * benchmarks/parallel. After the analysis only the estimates and
+       * the order are set (the others are 0 or -1).
        */
       struct Statistics
       {
+        double       estimated_flops          = 0;
         double       flops                    = 0;
         long         estimated_max_mb         = 0;
         long         estimated_total_mb       = 0;
