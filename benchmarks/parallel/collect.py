@@ -37,7 +37,12 @@ def row_of(run):
     ranks = re.findall(
         r"rank peak kB (\d+) user ([\d.]+) system ([\d.]+) wall ([\d.]+)",
         open(os.path.join(run, "stderr.txt")).read())
-    peaks = [int(r[0]) / 1024 for r in ranks]
+    # /usr/bin/time reports the ranks in the order they end; rank 0 is the
+    # one whose peak summary.json (written by rank 0) records.
+    rank0 = max(summary["peak_memory_mb"].values())
+    peaks = sorted((int(r[0]) / 1024 for r in ranks),
+                   key=lambda p: abs(p - rank0))
+    peaks = peaks[:1] + sorted(peaks[1:])
     # The CPU time of every rank against its wall time: the cores the run
     # had (a loaded machine gives a second rank less than a second core).
     row["cpu_s"] = sum(float(r[1]) + float(r[2]) for r in ranks)
