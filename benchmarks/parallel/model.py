@@ -6,7 +6,7 @@ of 1e7 dofs with 1e4 contact unknowns on 16, 64 and 256 ranks
 
 - factorisation: MUMPS' flops F(N) = F_0 (N / N_0)^p, p fitted to the flops
   MUMPS reports for the two largest sizes run (with a Schur complement
-  MUMPS 5.5 orders by AMD whatever ICNTL(7) asks, and p is well above the
+  Debian's MUMPS 5.5 orders by AMD whatever ICNTL(7) asks, and p is well above the
   2 of nested dissection in 3D, George 1973), at the measured rate r_1 of
   one rank, divided over P
   ranks with a parallel efficiency e: t(P) = F / (r_1 P e), once with the
