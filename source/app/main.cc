@@ -78,7 +78,8 @@ main(int argc, char **argv)
 
       if (print_parameters)
         {
-          dpana::scene::print_parameters(filename, std::cout);
+          if (root)
+            dpana::scene::print_parameters(filename, std::cout);
           return 0;
         }
       return dpana::scene::run(filename);
