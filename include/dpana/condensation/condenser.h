@@ -248,6 +248,19 @@ namespace dpana
       check_memory(const linear_algebra::SparseCholesky::Analysis &analysis);
 
       /**
+       * The factorisation back end MUMPS, whose analysis makes #estimate
+       * and calls check_memory_limit() before the numerical factorisation.
+       */
+      std::unique_ptr<linear_algebra::SchurFactorization>
+      make_mumps_back_end();
+
+      /**
+       * Throw an InputError if #estimate exceeds the memory limit.
+       */
+      void
+      check_memory_limit() const;
+
+      /**
        * The lower triangle of @p A = W^T W, for @p W whose column k
        * vanishes above row first_rows[k] (increasing).
        */
