@@ -343,9 +343,16 @@ namespace dpana
     void
     Condenser<dim>::condense_through_schur_complement()
     {
-      const auto &dofs = back_end->schur_dofs();
-      A.setZero(V.cols(), V.cols());
+      // On the MPI route A is formed on rank 0 alone, which solves the
+      // contact problem; the other ranks keep it empty.
+      const auto &dofs   = back_end->schur_dofs();
       relative_asymmetry = 0.0;
+      if (parameters.route == parallel::Route::mpi && !parallel::is_root())
+        {
+          A.resize(0, 0);
+          return;
+        }
+      A.setZero(V.cols(), V.cols());
       if (dofs.empty())
         return;
       std::vector<int> position(V.rows(), -1);

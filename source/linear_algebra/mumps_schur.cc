@@ -313,12 +313,13 @@ namespace dpana
 
     // S as MUMPS returns it on rank 0 (dense, column-major, one triangle),
     // copied and factored there: its lower triangle becomes L_S,
-    // which rank 0 then sends to the other ranks.
+    // which stays on rank 0 alone (the other ranks receive the Schur
+    // unknowns of each solve from it).
     void
     MumpsSchurFactorization::Impl::factor_schur_complement()
     {
       const dealii::types::blas_int n = gamma.size();
-      L.resize(n, n);
+      L.resize(rank == 0 ? n : 0, rank == 0 ? n : 0);
       if (n == 0)
         return;
       Mat                  S;
@@ -347,8 +348,6 @@ namespace dpana
         }
       MatFactorRestoreSchurComplement(F, &S, status);
       MPI_Bcast(&info, 1, MPI_INT, 0, communicator);
-      if (info == 0)
-        MPI_Bcast(L.data(), n * n, MPI_DOUBLE, 0, communicator);
       if (info != 0)
         throw NotPositiveDefiniteError(
           "the Schur complement on the contact surface (" + std::to_string(n) +
@@ -436,7 +435,10 @@ namespace dpana
     void
     MumpsSchurFactorization::solve_schur_factor(Eigen::MatrixXd &W) const
     {
-      AssertDimension(W.rows(), impl->L.rows());
+      AssertThrow(W.rows() == impl->L.rows(),
+                  dealii::ExcMessage("MumpsSchurFactorization: the factor "
+                                     "of the Schur complement is on rank 0 "
+                                     "only"));
       const dealii::types::blas_int n = W.rows(), nrhs = W.cols();
       if (n == 0 || nrhs == 0)
         return;
@@ -465,10 +467,13 @@ namespace dpana
       Eigen::VectorXd               x_gamma(n);
       for (dealii::types::blas_int k = 0; k < n; ++k)
         x_gamma(k) = b(impl->gamma[k]) - Kx(impl->gamma[k]);
+      // The Schur unknowns on rank 0, which holds L_S, sent to the others.
       dealii::types::blas_int info = 0;
-      dealii::potrs(
-        "L", &n, &one, impl->L.data(), &n, x_gamma.data(), &n, &info);
+      if (impl->rank == 0)
+        dealii::potrs(
+          "L", &n, &one, impl->L.data(), &n, x_gamma.data(), &n, &info);
       AssertThrow(info == 0, dealii::ExcInternalError());
+      MPI_Bcast(x_gamma.data(), n, MPI_DOUBLE, 0, impl->communicator);
 
       Eigen::VectorXd z = Eigen::VectorXd::Zero(b.size());
       for (dealii::types::blas_int k = 0; k < n; ++k)

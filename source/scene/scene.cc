@@ -353,6 +353,11 @@ namespace dpana
             condensers[b]->recover(summary_.result.r, alpha));
           bodies[b]->compute_stresses();
         }
+      // The summary needs A, which on the MPI route rank 0 alone holds and
+      // which rank 0 alone prints and writes.
+      if (condensation_parameters.route == parallel::Route::mpi &&
+          !parallel::is_root())
+        return;
       summarise(*surfaces[0],
                 problem_,
                 surface_parameters.region_centre,

@@ -157,6 +157,11 @@ namespace dpana
       Eigen::VectorXd
       surface_response(const dealii::Vector<double> &u) const;
 
+      /**
+       * A, the body's condensed compliance; empty on the ranks other than 0
+       * on the MPI route, where rank 0 alone forms it and solves the
+       * contact problem.
+       */
       const Eigen::MatrixXd &
       compliance() const
       {

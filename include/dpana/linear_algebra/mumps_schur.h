@@ -71,8 +71,11 @@ namespace dpana
      * distributed matrix (MATMPISBAIJ); MUMPS analyses, factors and solves
      * over all ranks. Its Schur complement is centralised: $S$ is returned
      * on rank 0 only (the index set of $\Gamma$ is empty on the other
-     * ranks), factored there, and $L_S$ is broadcast, so that
-     * solve_schur_factor() is the same local triangular solve on every rank.
+     * ranks) and factored there; $L_S$ stays on rank 0, so that
+     * solve_schur_factor() (the condensation, which forms $A$ on rank 0
+     * only) is for rank 0 alone, and the solves compute the Schur unknowns
+     * on rank 0 and broadcast them ($n_\Gamma$ numbers instead of the
+     * $n_\Gamma^2$ of $L_S$).
      * The interior solves are distributed (MatSolve on distributed vectors,
      * ICNTL(26) = 0); their results are gathered on every rank, so solve()
      * and solve_condensed() return the full vector everywhere.
@@ -117,7 +120,8 @@ namespace dpana
 
       /**
        * The dense lower triangular $L_S$ (row and column k belong to the
-       * degree of freedom schur_dofs()[k]), for checks.
+       * degree of freedom schur_dofs()[k]), for checks; empty on the
+       * ranks other than 0 of a parallel factorisation.
        */
       const Eigen::MatrixXd &
       schur_factor() const;
