@@ -17,7 +17,7 @@ of 1e7 dofs with 1e4 contact unknowns on 16, 64 and 256 ranks
   run on 2 ranks (INFOG(16) x P / INFOG(17));
 - the dense Schur block: S and L_S (n_G^3 / 3 flops, 2 x 8 n_G^2 bytes, on
   rank 0), W = L_S^-1 V_G and A = W^T W (n_G^2 n_c + n_G n_c^2 flops,
-  8 (n_G n_c + n_c^2) bytes) at the measured dense rate, serial;
+  8 (n_G n_c + n_c^2) bytes) at the measured dense rate, serial, on rank 0;
 - the contact solve: t = t_0 (n_c / n_c0)^q, q fitted to the measured runs,
   serial on rank 0;
 - assembly (the mesh and K replicated on every rank today) at the measured
@@ -113,9 +113,9 @@ def predict(m, N, nc, P, efficiency):
         "imbalance"]
     dense_mb = 8 * (2 * nG ** 2 + nG * nc + nc ** 2) / 2 ** 20
     mesh_mb = m["base_mb"] + m["asm_mb_per_dof"] * N
-    return t, {"factor per rank": factor_mb, "dense on every rank": dense_mb,
+    return t, {"factor per rank": factor_mb, "dense on rank 0": dense_mb,
                "mesh and K on every rank": mesh_mb,
-               "total per rank": factor_mb + dense_mb + mesh_mb}
+               "total on rank 0": factor_mb + dense_mb + mesh_mb}
 
 
 def main():
@@ -134,8 +134,8 @@ def main():
     lines += ["", "Prediction for a 3D body of %.0e dofs with %.0e contact "
               "unknowns (times in s, memory in GB):" % (TARGET_N, TARGET_NC),
               "", "| ranks | e | assembly | factorization | condensation | "
-              "contact solve | recovery | factor per rank | dense on every "
-              "rank | mesh and K on every rank | total per rank |",
+              "contact solve | recovery | factor per rank | dense on rank 0 "
+              "| mesh and K on every rank | total on rank 0 |",
               "|---|---|---|---|---|---|---|---|---|---|---|"]
     for P, e in [(P, e) for e in [m["efficiency"], 1.0] for P in RANKS]:
         t, mem = predict(m, TARGET_N, TARGET_NC, P, e)
@@ -144,8 +144,8 @@ def main():
                                     "condensation", "contact solve",
                                     "recovery"]) + " | " + " | ".join(
             "%.3g" % (mem[k] / 1024) for k in [
-                "factor per rank", "dense on every rank",
-                "mesh and K on every rank", "total per rank"]) + " |")
+                "factor per rank", "dense on rank 0",
+                "mesh and K on every rank", "total on rank 0"]) + " |")
     # Where the serial dense work on rank 0 overtakes the distributed
     # factorisation on 256 ranks, and where the dense blocks outgrow 64 GB.
     nc = 1000.0
@@ -160,7 +160,7 @@ def main():
     nc = 1000.0
     while nc < 1e7:
         _, mem = predict(m, TARGET_N, nc, 256, 1.0)
-        if mem["dense on every rank"] > 64 * 1024:
+        if mem["dense on rank 0"] > 64 * 1024:
             break
         nc *= 1.1
     lines.append("The dense blocks S, L_S, W and A outgrow a 64 GB node at "
