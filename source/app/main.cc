@@ -43,9 +43,13 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // Under mpirun every rank meets the same input errors; rank 0 reports
+  // them.
+  bool root = true;
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
       bool        print_parameters = false;
       std::string filename;
@@ -74,7 +78,8 @@ main(int argc, char **argv)
 
       if (print_parameters)
         {
-          dpana::scene::print_parameters(filename, std::cout);
+          if (root)
+            dpana::scene::print_parameters(filename, std::cout);
           return 0;
         }
       return dpana::scene::run(filename);
@@ -82,8 +87,9 @@ main(int argc, char **argv)
   catch (const std::exception &e)
     {
       std::cout << std::flush;
-      std::cerr << "dpana: error: " << dpana::parameters::one_line_message(e)
-                << std::endl;
+      if (root)
+        std::cerr << "dpana: error: " << dpana::parameters::one_line_message(e)
+                  << std::endl;
       return 1;
     }
   catch (...)

@@ -16,6 +16,40 @@ namespace dpana
 {
   namespace condensation
   {
+    namespace
+    {
+      // The memory estimate of a factorisation by MUMPS, made from its
+      // analysis: the largest workspace of one rank that MUMPS estimated
+      // (INFOG(16), the factor and its frontal matrices), the dense blocks
+      // of the Schur route (the Schur complement and its Cholesky factor,
+      // n_Gamma^2 each, W, n_Gamma x n_c, and A, n_c^2) and the resident
+      // memory before the factorisation. On more than one rank the largest
+      // resident memory of the ranks is taken, so that all ranks decide
+      // alike.
+      MemoryEstimate
+      mumps_estimate(
+        const linear_algebra::MumpsSchurFactorization::Statistics &statistics,
+        const unsigned int                                         n_dofs,
+        const unsigned int                                         n_c,
+        const MPI_Comm                                             communicator)
+      {
+        MemoryEstimate m;
+        m.made          = true;
+        m.n_dofs        = n_dofs;
+        m.n_gamma       = statistics.schur_size;
+        m.n_c           = n_c;
+        const double ng = m.n_gamma, nc = n_c;
+        m.factor       = 1e6 * statistics.estimated_max_mb;
+        m.dense        = 8.0 * (2.0 * ng * ng + ng * nc + nc * nc);
+        double current = resident_memory();
+        MPI_Allreduce(
+          &current, &m.current, 1, MPI_DOUBLE, MPI_MAX, communicator);
+        return m;
+      }
+    } // namespace
+
+
+
     template <int dim>
     Condenser<dim>::Condenser(
       const Body<dim>                            &body,
@@ -148,7 +182,7 @@ namespace dpana
         });
       cholesky.set_last_block_ordering(parameters.ordering);
       if (parameters.backend == Backend::mumps)
-        back_end = std::make_unique<linear_algebra::MumpsSchurFactorization>();
+        back_end = make_mumps_back_end();
       else
         back_end =
           std::make_unique<linear_algebra::CholmodSchurFactorization>(cholesky);
@@ -206,6 +240,46 @@ namespace dpana
       if (parameters.method == Method::blocked_solves)
         estimate.dense +=
           8.0 * 3.0 * n_dofs * std::min(parameters.columns_per_solve, n_c);
+      check_memory_limit();
+    }
+
+
+
+    // The back end MUMPS (on every rank of MPI_COMM_WORLD on the MPI route,
+    // on this process alone otherwise), with the memory estimate made from
+    // its analysis before its numerical factorisation.
+    template <int dim>
+    std::unique_ptr<linear_algebra::SchurFactorization>
+    Condenser<dim>::make_mumps_back_end()
+    {
+      const bool     mpi          = parameters.route == parallel::Route::mpi;
+      const MPI_Comm communicator = mpi ? MPI_COMM_WORLD : MPI_COMM_SELF;
+      if (mpi)
+        parallel::check_ranks(body.name(),
+                              body.triangulation().n_active_cells(),
+                              parallel::n_world_ranks());
+      auto mumps =
+        std::make_unique<linear_algebra::MumpsSchurFactorization>(communicator);
+      mumps->set_analysis_check(
+        [this, communicator](
+          const linear_algebra::MumpsSchurFactorization::Statistics &s) {
+          estimate = mumps_estimate(s,
+                                    body.dof_handler().n_dofs(),
+                                    dim * surface.n_elements(),
+                                    communicator);
+          check_memory_limit();
+        });
+      return mumps;
+    }
+
+
+
+    // An InputError if #estimate exceeds Contact / Memory limit (GB) or,
+    // without one, the memory this machine has available.
+    template <int dim>
+    void
+    Condenser<dim>::check_memory_limit() const
+    {
       const double limit = memory_limit(parameters.memory_limit_gb);
       if (estimate.total() <= limit)
         return;
@@ -269,9 +343,16 @@ namespace dpana
     void
     Condenser<dim>::condense_through_schur_complement()
     {
-      const auto &dofs = back_end->schur_dofs();
-      A.setZero(V.cols(), V.cols());
+      // On the MPI route A is formed on rank 0 alone, which solves the
+      // contact problem; the other ranks keep it empty.
+      const auto &dofs   = back_end->schur_dofs();
       relative_asymmetry = 0.0;
+      if (parameters.route == parallel::Route::mpi && !parallel::is_root())
+        {
+          A.resize(0, 0);
+          return;
+        }
+      A.setZero(V.cols(), V.cols());
       if (dofs.empty())
         return;
       std::vector<int> position(V.rows(), -1);

@@ -58,6 +58,15 @@ namespace dpana
                         "and of the contact solve is estimated; a run whose "
                         "estimate exceeds the limit stops there with an "
                         "error.");
+      prm.declare_entry("Parallel route",
+                        "auto",
+                        dealii::Patterns::Selection("auto|serial|mpi"),
+                        "How the run uses its MPI ranks (doc/parallel.md): "
+                        "'serial' one process, each body factored by the "
+                        "Factorisation back end; 'mpi' each body factored by "
+                        "MUMPS over all ranks (mpirun -np P dpana FILE.prm), "
+                        "the contact problem solved on rank 0; 'auto' mpi "
+                        "on more than one rank, serial on one.");
     }
 
 
@@ -74,6 +83,19 @@ namespace dpana
       if (backend == Backend::mumps && method != Method::schur)
         throw InputError("Contact / Factorisation back end = mumps needs "
                          "Contact / Condensation method = schur");
+      route = parallel::choose_route(prm.get("Parallel route"),
+                                     parallel::n_world_ranks());
+      if (route == parallel::Route::mpi)
+        {
+          if (method != Method::schur)
+            throw InputError("Contact / Condensation method = blocked "
+                             "solves is not supported by the MPI route "
+                             "(Contact / Parallel route = mpi, or auto on "
+                             "more than one rank); use schur");
+          backend = Backend::mumps;
+        }
+      if (backend == Backend::mumps)
+        parallel::check_mumps_available();
       memory_limit_gb        = prm.get_double("Memory limit (GB)");
       const std::string name = prm.get("Schur ordering");
       for (const auto o :

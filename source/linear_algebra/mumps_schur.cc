@@ -2,99 +2,43 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
+#include <dpana/base/exceptions.h>
 #include <dpana/linear_algebra/mumps_schur.h>
+#include <dpana/parallel/petsc_calls.h>
 
 #include <deal.II/lac/lapack_templates.h>
 
-#include <cstdlib>
-#include <stdexcept>
+#include <algorithm>
 #include <string>
-
-#include <petscmat.h>
 
 namespace dpana
 {
   namespace linear_algebra
   {
+    using parallel::check;
+    using parallel::infog;
+    using parallel::QuietPetsc;
+
+
+
     namespace
     {
-      // PETSc reports an error by its return code; while this guard lives,
-      // it returns them without printing a traceback.
-      struct QuietPetsc
+      // What MUMPS reports of the factor F, after its analysis or its
+      // factorisation.
+      MumpsSchurFactorization::Statistics
+      statistics_of(const Mat F, const unsigned int schur_size)
       {
-        QuietPetsc()
-        {
-          PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-        }
-        ~QuietPetsc()
-        {
-          PetscPopErrorHandler();
-        }
-      };
-
-      void
-      check(const PetscErrorCode code, const char *call)
-      {
-        if (code != 0)
-          throw std::runtime_error(std::string("MUMPS through PETSc: ") + call +
-                                   " failed (PETSc error " +
-                                   std::to_string(static_cast<int>(code)) +
-                                   ")");
-      }
-
-      // PETSc is initialised by deal.II's MPI_InitFinalize; a program
-      // without it gets PETSc (and MPI) initialised here and finalised at
-      // exit.
-      void
-      ensure_petsc()
-      {
-        PetscBool initialized = PETSC_FALSE;
-        PetscInitialized(&initialized);
-        if (initialized)
-          return;
-        check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
-        std::atexit([]() {
-          PetscBool finalized = PETSC_FALSE;
-          PetscFinalized(&finalized);
-          if (!finalized)
-            PetscFinalize();
-        });
-      }
-
-
-
-      // MatSolve or MatMult of @p M with @p x, on Eigen's storage.
-      Eigen::VectorXd
-      apply(PetscErrorCode (*operation)(Mat, Vec, Vec),
-            const Mat              M,
-            const Eigen::VectorXd &x,
-            const char            *name)
-      {
-        Eigen::VectorXd y(x.size());
-        Vec             vx, vy;
-        check(
-          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, x.size(), x.data(), &vx),
-          "VecCreateSeqWithArray");
-        check(
-          VecCreateSeqWithArray(PETSC_COMM_SELF, 1, y.size(), y.data(), &vy),
-          "VecCreateSeqWithArray");
-        const PetscErrorCode code = operation(M, vx, vy);
-        VecDestroy(&vx);
-        VecDestroy(&vy);
-        check(code, name);
-        return y;
-      }
-
-
-
-      // MUMPS' INFOG(i) of the factor @p F, -1 without a factor.
-      int
-      infog(const Mat F, const int i)
-      {
-        PetscInt value = -1;
-        if (F)
-          MatMumpsGetInfog(F, i, &value);
-        return value;
+        MumpsSchurFactorization::Statistics s;
+        s.estimated_flops          = parallel::rinfog(F, 1);
+        s.flops                    = parallel::rinfog(F, 3);
+        s.estimated_max_mb         = infog(F, 16);
+        s.estimated_total_mb       = infog(F, 17);
+        s.estimated_factor_entries = infog(F, 20);
+        s.used_max_mb              = infog(F, 21);
+        s.used_total_mb            = infog(F, 22);
+        s.factor_entries           = infog(F, 29);
+        s.schur_size               = schur_size;
+        return s;
       }
     } // namespace
 
@@ -102,8 +46,18 @@ namespace dpana
 
     struct MumpsSchurFactorization::Impl
     {
-      Mat K = nullptr;
-      Mat F = nullptr;
+      explicit Impl(const MPI_Comm communicator)
+        : communicator(communicator)
+      {
+        MPI_Comm_rank(communicator, &rank);
+      }
+
+      MPI_Comm                                communicator;
+      std::function<void(const Statistics &)> analysis_check;
+      int                                     rank = 0;
+      parallel::RowRange                      rows;
+      Mat                                     K = nullptr;
+      Mat                                     F = nullptr;
 
       dealii::AffineConstraints<double> constraints, homogeneous;
       std::vector<unsigned int>         free;
@@ -129,7 +83,13 @@ namespace dpana
       void
       create_matrix(const dealii::SparseMatrix<double> &K_full);
       void
+      insert_distributed(const std::vector<PetscInt>    &row_start,
+                         const std::vector<PetscInt>    &columns,
+                         const std::vector<PetscScalar> &values);
+      void
       factor_interior();
+      PetscInt
+      try_factor(const PetscInt relaxation);
       void
       factor_schur_complement();
 
@@ -187,18 +147,22 @@ namespace dpana
 
 
 
-    // The upper triangle of K_r in compressed rows. A row of a deal.II
-    // SparseMatrix holds its diagonal first and then the other columns in
-    // increasing order, so the kept columns are in increasing order.
+    // The upper triangle of the rows of K_r this rank owns, in compressed
+    // rows with global column indices. A row of a deal.II SparseMatrix holds
+    // its diagonal first and then the other columns in increasing order, so
+    // the kept columns are in increasing order. On one rank the matrix is
+    // sequential (MATSBAIJ becomes MATSEQSBAIJ), on several distributed by
+    // contiguous blocks of rows (MATMPISBAIJ).
     void
     MumpsSchurFactorization::Impl::create_matrix(
       const dealii::SparseMatrix<double> &K_full)
     {
+      rows = parallel::RowRange(communicator, free.size());
       std::vector<PetscInt>    row_start(1, 0), columns;
       std::vector<PetscScalar> values;
-      for (const unsigned int i : free)
+      for (PetscInt r = rows.begin; r < rows.end; ++r)
         {
-          const int r = reduced_index[i];
+          const unsigned int i = free[r];
           for (auto it = K_full.begin(i); it != K_full.end(i); ++it)
             {
               const int c = reduced_index[it->column()];
@@ -210,14 +174,52 @@ namespace dpana
             }
           row_start.push_back(columns.size());
         }
-      const PetscInt n = free.size();
-      check(MatCreate(PETSC_COMM_SELF, &K), "MatCreate");
-      check(MatSetSizes(K, n, n, n, n), "MatSetSizes");
-      check(MatSetType(K, MATSEQSBAIJ), "MatSetType");
-      check(MatSeqSBAIJSetPreallocationCSR(
-              K, 1, row_start.data(), columns.data(), values.data()),
-            "MatSeqSBAIJSetPreallocationCSR");
+      const PetscInt n = rows.n, n_local = rows.n_local();
+      check(MatCreate(communicator, &K), "MatCreate");
+      check(MatSetSizes(K, n_local, n_local, n, n), "MatSetSizes");
+      check(MatSetType(K, MATSBAIJ), "MatSetType");
+      if (rows.counts.size() > 1)
+        insert_distributed(row_start, columns, values);
+      else
+        check(MatSeqSBAIJSetPreallocationCSR(
+                K, 1, row_start.data(), columns.data(), values.data()),
+              "MatSeqSBAIJSetPreallocationCSR");
       check(MatSetOption(K, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");
+    }
+
+
+
+    // The rows of this rank into the distributed matrix, preallocated by
+    // the counts of their columns in the diagonal block (those this rank
+    // owns) and right of it.
+    void
+    MumpsSchurFactorization::Impl::insert_distributed(
+      const std::vector<PetscInt>    &row_start,
+      const std::vector<PetscInt>    &columns,
+      const std::vector<PetscScalar> &values)
+    {
+      const PetscInt        n_local = rows.n_local();
+      std::vector<PetscInt> diagonal(n_local, 0), off_diagonal(n_local, 0);
+      for (PetscInt r = 0; r < n_local; ++r)
+        for (PetscInt k = row_start[r]; k < row_start[r + 1]; ++k)
+          ++(columns[k] < rows.end ? diagonal[r] : off_diagonal[r]);
+      check(MatMPISBAIJSetPreallocation(
+              K, 1, 0, diagonal.data(), 0, off_diagonal.data()),
+            "MatMPISBAIJSetPreallocation");
+      for (PetscInt r = 0; r < n_local; ++r)
+        {
+          const PetscInt row = rows.begin + r;
+          check(MatSetValues(K,
+                             1,
+                             &row,
+                             row_start[r + 1] - row_start[r],
+                             columns.data() + row_start[r],
+                             values.data() + row_start[r],
+                             INSERT_VALUES),
+                "MatSetValues");
+        }
+      check(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+      check(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
     }
 
 
@@ -226,20 +228,61 @@ namespace dpana
     // MUMPS as INFOG(1) < 0, which PETSc returns either as an error of the
     // numeric factorisation or as a factor error; a negative one is only
     // counted (INFOG(12)), the factorisation of a symmetric positive
-    // definite matrix (MUMPS' SYM = 1) going on without pivoting.
+    // definite matrix (MUMPS' SYM = 1) going on without pivoting. A
+    // workspace that its analysis estimated too small (INFOG(1) = -8, -9,
+    // -11, -12, -14, -15; it happens on several ranks) is enlarged: the
+    // factorisation is made again with twice the relaxation ICNTL(14) of
+    // the estimate, up to three times.
     void
     MumpsSchurFactorization::Impl::factor_interior()
     {
+      PetscInt relaxation = 0;
+      for (unsigned int attempt = 0;; ++attempt)
+        {
+          const PetscInt status    = try_factor(relaxation);
+          const bool     workspace = status == -8 || status == -9 ||
+                                 status == -11 || status == -12 ||
+                                 status == -14 || status == -15;
+          if (status == 0)
+            break;
+          if (!workspace || attempt == 3)
+            throw NotPositiveDefiniteError(
+              "MUMPS' Cholesky factorisation failed (INFOG(1) = " +
+              std::to_string(status) + ") on a matrix of " +
+              std::to_string(free.size()) +
+              " unknowns: it is not positive definite; a stiffness matrix is "
+              "singular when the body is not held against rigid motions");
+          MatMumpsGetIcntl(F, 14, &relaxation);
+          relaxation = 2 * std::max<PetscInt>(relaxation, 20);
+          MatDestroy(&F);
+        }
+      // Later solves with F are solves with K_II only.
+      check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+    }
+
+
+
+    // One analysis and factorisation, with the memory relaxation
+    // ICNTL(14) = @p relaxation if it is positive; MUMPS' INFOG(1), or -10
+    // (MUMPS' code of a singular matrix) for a negative pivot.
+    PetscInt
+    MumpsSchurFactorization::Impl::try_factor(const PetscInt relaxation)
+    {
       check(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F),
             "MatGetFactor(MATSOLVERMUMPS)");
-      AssertThrow(F != nullptr,
-                  dealii::ExcMessage("MumpsSchurFactorization: this PETSc "
-                                     "has no MUMPS."));
+      if (F == nullptr)
+        throw InputError("this PETSc has no MUMPS (MatGetFactor); "
+                         "Contact / Factorisation back end = mumps and the "
+                         "MPI route need a PETSc configured with MUMPS");
+      if (relaxation > 0)
+        check(MatMumpsSetIcntl(F, 14, relaxation), "MatMumpsSetIcntl(14)");
+      // MUMPS computes a centralised Schur complement on rank 0: there the
+      // index set lists all the unknowns of Gamma, on the other ranks none.
       if (!gamma.empty())
         {
           IS is;
-          check(ISCreateGeneral(PETSC_COMM_SELF,
-                                gamma.size(),
+          check(ISCreateGeneral(communicator,
+                                rank == 0 ? gamma.size() : 0,
                                 gamma.data(),
                                 PETSC_COPY_VALUES,
                                 &is),
@@ -251,52 +294,60 @@ namespace dpana
       check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
       check(MatCholeskyFactorSymbolic(F, K, nullptr, &info),
             "MatCholeskyFactorSymbolic");
+      if (analysis_check)
+        analysis_check(statistics_of(F, gamma.size()));
       const PetscErrorCode code  = MatCholeskyFactorNumeric(F, K, &info);
       MatFactorError       error = MAT_FACTOR_NOERROR;
       MatFactorGetError(F, &error);
       PetscInt status = 0, negative = 0;
       MatMumpsGetInfog(F, 1, &status);
       MatMumpsGetInfog(F, 12, &negative);
-      if (code != 0 || error != MAT_FACTOR_NOERROR || status < 0 ||
-          negative > 0)
-        throw NotPositiveDefiniteError(
-          "MUMPS' Cholesky factorisation failed (INFOG(1) = " +
-          std::to_string(status) + ") on a matrix of " +
-          std::to_string(free.size()) +
-          " unknowns: it is not positive definite; a stiffness matrix is "
-          "singular when the body is not held against rigid motions");
-      // Later solves with F are solves with K_II only.
-      check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+      if (negative > 0)
+        return -10;
+      if (status == 0 && (code != 0 || error != MAT_FACTOR_NOERROR))
+        return -1;
+      return status;
     }
 
 
 
-    // S as MUMPS returns it (dense, column-major, both triangles), copied
-    // and factored: its lower triangle becomes L_S.
+    // S as MUMPS returns it on rank 0 (dense, column-major, one triangle),
+    // copied and factored there: its lower triangle becomes L_S,
+    // which stays on rank 0 alone (the other ranks receive the Schur
+    // unknowns of each solve from it).
     void
     MumpsSchurFactorization::Impl::factor_schur_complement()
     {
       const dealii::types::blas_int n = gamma.size();
-      L.resize(n, n);
+      L.resize(rank == 0 ? n : 0, rank == 0 ? n : 0);
       if (n == 0)
         return;
       Mat                  S;
       MatFactorSchurStatus status;
       check(MatFactorGetSchurComplement(F, &S, &status),
             "MatFactorGetSchurComplement");
-      const PetscScalar *values;
-      PetscInt           lda = 0;
-      check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
-      check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
-      for (dealii::types::blas_int j = 0; j < n; ++j)
-        for (dealii::types::blas_int i = j; i < n; ++i)
-          L(i, j) = values[i + j * lda];
-      MatDenseRestoreArrayRead(S, &values);
-      MatFactorRestoreSchurComplement(F, &S, status);
-
-      L.triangularView<Eigen::StrictlyUpper>().setZero();
       dealii::types::blas_int info = 0;
-      dealii::potrf("L", &n, L.data(), &n, &info);
+      if (rank == 0)
+        {
+          const PetscScalar *values;
+          PetscInt           lda = 0;
+          check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
+          check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
+          for (dealii::types::blas_int j = 0; j < n; ++j)
+            for (dealii::types::blas_int i = 0; i < n; ++i)
+              L(i, j) = values[i + j * lda];
+          MatDenseRestoreArrayRead(S, &values);
+          // The triangle that holds S: on one process the lower one; on
+          // several MUMPS returns the lower triangle by rows, which the
+          // column-major array holds as its upper one (the rest of the
+          // array is not set).
+          if (rows.counts.size() > 1)
+            L = L.transpose().eval();
+          L.triangularView<Eigen::StrictlyUpper>().setZero();
+          dealii::potrf("L", &n, L.data(), &n, &info);
+        }
+      MatFactorRestoreSchurComplement(F, &S, status);
+      MPI_Bcast(&info, 1, MPI_INT, 0, communicator);
       if (info != 0)
         throw NotPositiveDefiniteError(
           "the Schur complement on the contact surface (" + std::to_string(n) +
@@ -311,7 +362,7 @@ namespace dpana
     MumpsSchurFactorization::Impl::solve_interior(
       const Eigen::VectorXd &b) const
     {
-      Eigen::VectorXd y = apply(MatSolve, F, b, "MatSolve");
+      Eigen::VectorXd y = parallel::apply(MatSolve, F, rows, b, "MatSolve");
       for (const PetscInt k : gamma)
         y(k) = 0.0;
       return y;
@@ -322,13 +373,14 @@ namespace dpana
     Eigen::VectorXd
     MumpsSchurFactorization::Impl::multiply(const Eigen::VectorXd &x) const
     {
-      return apply(MatMult, K, x, "MatMult");
+      return parallel::apply(MatMult, K, rows, x, "MatMult");
     }
 
 
 
-    MumpsSchurFactorization::MumpsSchurFactorization()
-      : impl(std::make_unique<Impl>())
+    MumpsSchurFactorization::MumpsSchurFactorization(
+      const MPI_Comm communicator)
+      : impl(std::make_unique<Impl>(communicator))
     {
     }
 
@@ -348,7 +400,7 @@ namespace dpana
       const std::vector<unsigned int>         &gamma_dofs)
     {
       AssertThrow(K.m() == K.n(), dealii::ExcNotQuadratic());
-      ensure_petsc();
+      parallel::ensure_petsc();
       const QuietPetsc quiet;
       impl->destroy();
       impl->copy_constraints(constraints);
@@ -383,7 +435,10 @@ namespace dpana
     void
     MumpsSchurFactorization::solve_schur_factor(Eigen::MatrixXd &W) const
     {
-      AssertDimension(W.rows(), impl->L.rows());
+      AssertThrow(W.rows() == impl->L.rows(),
+                  dealii::ExcMessage("MumpsSchurFactorization: the factor "
+                                     "of the Schur complement is on rank 0 "
+                                     "only"));
       const dealii::types::blas_int n = W.rows(), nrhs = W.cols();
       if (n == 0 || nrhs == 0)
         return;
@@ -412,10 +467,13 @@ namespace dpana
       Eigen::VectorXd               x_gamma(n);
       for (dealii::types::blas_int k = 0; k < n; ++k)
         x_gamma(k) = b(impl->gamma[k]) - Kx(impl->gamma[k]);
+      // The Schur unknowns on rank 0, which holds L_S, sent to the others.
       dealii::types::blas_int info = 0;
-      dealii::potrs(
-        "L", &n, &one, impl->L.data(), &n, x_gamma.data(), &n, &info);
+      if (impl->rank == 0)
+        dealii::potrs(
+          "L", &n, &one, impl->L.data(), &n, x_gamma.data(), &n, &info);
       AssertThrow(info == 0, dealii::ExcInternalError());
+      MPI_Bcast(x_gamma.data(), n, MPI_DOUBLE, 0, impl->communicator);
 
       Eigen::VectorXd z = Eigen::VectorXd::Zero(b.size());
       for (dealii::types::blas_int k = 0; k < n; ++k)
@@ -490,6 +548,47 @@ namespace dpana
     MumpsSchurFactorization::factor_memory_mb() const
     {
       return infog(impl->F, 22);
+    }
+
+
+
+    unsigned int
+    MumpsSchurFactorization::n_ranks() const
+    {
+      return impl->rows.counts.size();
+    }
+
+
+
+    void
+    MumpsSchurFactorization::set_analysis_check(
+      const std::function<void(const Statistics &)> &check)
+    {
+      impl->analysis_check = check;
+    }
+
+
+
+    MumpsSchurFactorization::Statistics
+    MumpsSchurFactorization::statistics() const
+    {
+      return statistics_of(impl->F, impl->gamma.size());
+    }
+
+
+
+    std::string
+    MumpsSchurFactorization::Statistics::describe() const
+    {
+      const auto gflops = std::to_string(flops / 1e9);
+      return gflops.substr(0, gflops.find('.') + 3) +
+             " Gflop, memory estimated " + std::to_string(estimated_total_mb) +
+             " MB (at most " + std::to_string(estimated_max_mb) +
+             " MB on one rank), used " + std::to_string(used_total_mb) +
+             " MB (at most " + std::to_string(used_max_mb) +
+             " MB on one rank), " + std::to_string(factor_entries) +
+             " factor entries, Schur complement of " +
+             std::to_string(schur_size) + " unknowns";
     }
   } // namespace linear_algebra
 } // namespace dpana

@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
+#include <dpana/base/exceptions.h>
+#include <dpana/parallel/route.h>
 #include <dpana/scene/run.h>
 #include <dpana/scene/scene.h>
 
@@ -64,10 +66,21 @@ namespace dpana
         dealii::ParameterHandler prm;
         declare_parameters(prm, outline);
         parameters::parse_file(prm, prm_file);
+        // On several MPI ranks every rank runs the scene (doc/parallel.md);
+        // rank 0 alone prints and writes.
+        const unsigned int n_ranks = parallel::n_world_ranks();
+        if (n_ranks > 1 && !outline.has_contact)
+          throw InputError("an elastic run (no subsection Contact) runs on "
+                           "one process, not on " +
+                           std::to_string(n_ranks) +
+                           " MPI ranks; the MPI route (Contact / Parallel "
+                           "route) needs a contact scene");
+        const bool root = parallel::is_root();
         Scene<dim> scene;
+        scene.set_quiet(!root);
         scene.parse_parameters(prm, outline.n_bodies, outline.has_contact);
         scene.set_scene_file(prm_file);
-        scene.run(true);
+        scene.run(root);
 
         // A run that did not converge has written its output, marked as
         // such, but must not pass for a result: it exits non-zero unless
@@ -76,11 +89,13 @@ namespace dpana
         if (scene.has_contact() && !result.converged &&
             !scene.accepts_non_converged())
           {
-            std::cerr << "dpana: error: the contact solver did not converge "
-                      << "(residual " << result.residual << " after "
-                      << result.iterations << " iterations: " << result.message
-                      << "); set Contact / Allow non-converged = true to "
-                      << "accept it" << std::endl;
+            if (root)
+              std::cerr << "dpana: error: the contact solver did not converge "
+                        << "(residual " << result.residual << " after "
+                        << result.iterations
+                        << " iterations: " << result.message
+                        << "); set Contact / Allow non-converged = true to "
+                        << "accept it" << std::endl;
             return exit_not_converged;
           }
         return 0;

@@ -4,6 +4,7 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/io/fclib.h>
+#include <dpana/linear_algebra/mumps_schur.h>
 #include <dpana/output/contact_output.h>
 #include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
@@ -242,6 +243,13 @@ namespace dpana
             std::cout << "        Memory estimate of " << bodies[b]->name()
                       << ": " << condensers[b]->memory_estimate().describe()
                       << std::endl;
+          const auto *mumps =
+            dynamic_cast<const linear_algebra::MumpsSchurFactorization *>(
+              &condensers[b]->schur_factorization());
+          if (!quiet && mumps != nullptr)
+            std::cout << "        MUMPS on " << mumps->n_ranks()
+                      << " rank(s): " << mumps->statistics().describe()
+                      << std::endl;
           const auto phase =
             phase_log.phase("condensation", "condensing " + bodies[b]->name());
           condensers[b]->assemble_coupling();
@@ -289,14 +297,20 @@ namespace dpana
           phase_log.phase("contact solve",
                           "solving the contact problem (" +
                             contact::to_string(solver.options.type) + ")");
+        // On the MPI route rank 0 alone solves; the others receive its
+        // result.
+        const bool mpi = condensation_parameters.route == parallel::Route::mpi;
         try
           {
-            summary_.result = contact::solve(problem_, solver.options);
+            if (!mpi || parallel::is_root())
+              summary_.result = contact::solve(problem_, solver.options);
           }
         catch (const std::invalid_argument &e)
           {
             throw InputError(std::string("Contact: ") + e.what());
           }
+        if (mpi)
+          parallel::broadcast(summary_.result, MPI_COMM_WORLD);
       }
       const auto &r = summary_.result;
       if (!quiet)
@@ -339,6 +353,11 @@ namespace dpana
             condensers[b]->recover(summary_.result.r, alpha));
           bodies[b]->compute_stresses();
         }
+      // The summary needs A, which on the MPI route rank 0 alone holds and
+      // which rank 0 alone prints and writes.
+      if (condensation_parameters.route == parallel::Route::mpi &&
+          !parallel::is_root())
+        return;
       summarise(*surfaces[0],
                 problem_,
                 surface_parameters.region_centre,

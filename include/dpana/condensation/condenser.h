@@ -157,6 +157,11 @@ namespace dpana
       Eigen::VectorXd
       surface_response(const dealii::Vector<double> &u) const;
 
+      /**
+       * A, the body's condensed compliance; empty on the ranks other than 0
+       * on the MPI route, where rank 0 alone forms it and solves the
+       * contact problem.
+       */
       const Eigen::MatrixXd &
       compliance() const
       {
@@ -246,6 +251,19 @@ namespace dpana
        */
       void
       check_memory(const linear_algebra::SparseCholesky::Analysis &analysis);
+
+      /**
+       * The factorisation back end MUMPS, whose analysis makes #estimate
+       * and calls check_memory_limit() before the numerical factorisation.
+       */
+      std::unique_ptr<linear_algebra::SchurFactorization>
+      make_mumps_back_end();
+
+      /**
+       * Throw an InputError if #estimate exceeds the memory limit.
+       */
+      void
+      check_memory_limit() const;
 
       /**
        * The lower triangle of @p A = W^T W, for @p W whose column k

@@ -5,6 +5,7 @@
 #define dpana_condensation_parameters_h
 
 #include <dpana/linear_algebra/last_block_ordering.h>
+#include <dpana/parallel/route.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -51,6 +52,7 @@ namespace dpana
      *       set Columns per solve      = 256
      *       set Schur ordering         = interior nested dissection
      *       set Memory limit (GB)      = 0
+     *       set Parallel route         = auto
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -76,6 +78,12 @@ namespace dpana
        * refused before its factorisation.
        */
       double memory_limit_gb = 0;
+      /**
+       * The parallel::Route of the run, resolved from the setting (auto,
+       * serial, mpi) and the number of MPI ranks. The MPI route factors
+       * with MUMPS whatever the back end says, and needs Method::schur.
+       */
+      parallel::Route route = parallel::Route::serial;
 
       /**
        * Declare the entries Condensation method, Factorisation back end,

@@ -6,7 +6,10 @@
 
 #include <dpana/linear_algebra/schur_factorization.h>
 
+#include <functional>
 #include <memory>
+
+#include <mpi.h>
 
 namespace dpana
 {
@@ -52,15 +55,41 @@ namespace dpana
      * PETSc must be initialised before the first factorize(): deal.II's
      * Utilities::MPI::MPI_InitFinalize does so, and where no one has,
      * factorize() initialises it itself (PetscInitializeNoArguments) and
-     * finalises it at exit. The matrices live on PETSC_COMM_SELF. Errors of
+     * finalises it at exit. Errors of
      * PETSc are returned, not printed, and thrown as exceptions; a pivot
      * of MUMPS that is not positive, or a Schur complement that is not, is
      * a NotPositiveDefiniteError as for SparseCholesky.
+     *
+     * <h3>Over MPI</h3>
+     *
+     * The factorisation lives on the communicator given to the constructor.
+     * On one rank (MPI_COMM_SELF, the serial route) the matrix is
+     * sequential. On several (the MPI route, doc/parallel.md) every rank
+     * calls every function with the same arguments (the body and its
+     * reduced matrix are known on every rank) and inserts only the rows of
+     * $K_r$ it owns, a contiguous block as PETSc splits them, into a
+     * distributed matrix (MATMPISBAIJ); MUMPS analyses, factors and solves
+     * over all ranks. Its Schur complement is centralised: $S$ is returned
+     * on rank 0 only (the index set of $\Gamma$ is empty on the other
+     * ranks) and factored there; $L_S$ stays on rank 0, so that
+     * solve_schur_factor() (the condensation, which forms $A$ on rank 0
+     * only) is for rank 0 alone, and the solves compute the Schur unknowns
+     * on rank 0 and broadcast them ($n_\Gamma$ numbers instead of the
+     * $n_\Gamma^2$ of $L_S$).
+     * The interior solves are distributed (MatSolve on distributed vectors,
+     * ICNTL(26) = 0); their results are gathered on every rank, so solve()
+     * and solve_condensed() return the full vector everywhere.
      */
     class MumpsSchurFactorization : public SchurFactorization
     {
     public:
-      MumpsSchurFactorization();
+      /**
+       * A factorisation over the ranks of @p communicator (MPI_COMM_SELF:
+       * one process; MPI_COMM_WORLD: the MPI route). Every function is then
+       * collective on it.
+       */
+      explicit MumpsSchurFactorization(
+        const MPI_Comm communicator = MPI_COMM_SELF);
       ~MumpsSchurFactorization() override;
       MumpsSchurFactorization(const MumpsSchurFactorization &) = delete;
       MumpsSchurFactorization &
@@ -91,7 +120,8 @@ namespace dpana
 
       /**
        * The dense lower triangular $L_S$ (row and column k belong to the
-       * degree of freedom schur_dofs()[k]), for checks.
+       * degree of freedom schur_dofs()[k]), for checks; empty on the
+       * ranks other than 0 of a parallel factorisation.
        */
       const Eigen::MatrixXd &
       schur_factor() const;
@@ -105,6 +135,56 @@ namespace dpana
       ordering() const;
       int
       factor_memory_mb() const;
+
+      /**
+       * The number of ranks of the factorisation.
+       */
+      unsigned int
+      n_ranks() const;
+
+      /**
+       * What MUMPS reports of its factorisation (the same on every rank):
+       * the flops of the elimination its analysis estimated (RINFOG(1))
+       * and that it made (RINFOG(3)), the memory its analysis
+       * estimated (INFOG(16): the largest of one rank, INFOG(17): the sum
+       * over the ranks, in MB) and that the factorisation used (INFOG(21),
+       * INFOG(22)), the entries of the factors its analysis estimated
+       * (INFOG(20)) and that it made (INFOG(29)), and the order of the
+       * Schur complement. The inputs of the cost model of
+       * benchmarks/parallel. After the analysis only the estimates and
+       * the order are set (the others are 0 or -1).
+       */
+      struct Statistics
+      {
+        double       estimated_flops          = 0;
+        double       flops                    = 0;
+        long         estimated_max_mb         = 0;
+        long         estimated_total_mb       = 0;
+        long         used_max_mb              = 0;
+        long         used_total_mb            = 0;
+        long         estimated_factor_entries = 0;
+        long         factor_entries           = 0;
+        unsigned int schur_size               = 0;
+
+        /**
+         * One line for the log.
+         */
+        std::string
+        describe() const;
+      };
+
+      Statistics
+      statistics() const;
+
+      /**
+       * A function that factorize() calls between MUMPS' analysis and its
+       * numerical factorisation with the Statistics of the analysis (its
+       * estimates of the flops and of the memory, the same on every rank),
+       * e.g. to refuse a factorisation that would not fit by throwing
+       * (on every rank alike). None by default.
+       */
+      void
+      set_analysis_check(const std::function<void(const Statistics &)> &check);
 
     private:
       /**

@@ -12,6 +12,7 @@
 #include <dpana/scene/scene.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -314,4 +315,38 @@ TEST(Condensation, MumpsRefusesAMatrixThatIsNotPositiveDefinite)
   EXPECT_NO_THROW(
     factor.factorize(body.system_matrix(), body.constraints(), {}));
   EXPECT_TRUE(factor.schur_dofs().empty());
+}
+
+
+
+// MUMPS' analysis is handed to set_analysis_check() before the numerical
+// factorisation: a check that throws stops factorize() with its exception,
+// and the estimates it saw (flops RINFOG(1), factor entries INFOG(20)) are
+// those the factorisation then makes (RINFOG(3), INFOG(29)): no pivot of a
+// positive definite matrix is delayed. On the held 3D foundation.
+TEST(Condensation, MumpsAnalysisCheckComesBeforeTheFactorisation)
+{
+  using Statistics = linear_algebra::MumpsSchurFactorization::Statistics;
+  auto s           = block_3d(true);
+  s->assemble();
+  const auto                             &body = s->body(1);
+  linear_algebra::MumpsSchurFactorization factor;
+  Statistics                              seen;
+  factor.set_analysis_check([&seen](const Statistics &analysis) {
+    seen = analysis;
+    throw std::runtime_error("refused after the analysis");
+  });
+  EXPECT_THROW(factor.factorize(body.system_matrix(), body.constraints(), {}),
+               std::runtime_error);
+  EXPECT_GT(seen.estimated_flops, 0.0);
+  EXPECT_GT(seen.estimated_factor_entries, 0);
+  EXPECT_GT(seen.estimated_total_mb, 0);
+
+  factor.set_analysis_check(
+    [&seen](const Statistics &analysis) { seen = analysis; });
+  factor.factorize(body.system_matrix(), body.constraints(), {});
+  const Statistics made = factor.statistics();
+  EXPECT_NEAR(made.flops / seen.estimated_flops, 1.0, 1e-6);
+  EXPECT_EQ(made.factor_entries, seen.estimated_factor_entries);
+  EXPECT_GT(made.used_total_mb, 0);
 }
