@@ -25,6 +25,7 @@ packages=(
   python3 python3-matplotlib python3-numpy # plots of results and benchmarks
   libsiconos-numerics-dev # independent contact solvers for cross-checks
   gmsh                  # meshes made from .geo files (tutorials, 3D Hertz sphere)
+  openmpi-bin           # mpirun: the MPI route and its tests (tests/mpi)
   clang-format
 )
 
