@@ -6,6 +6,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <filesystem>
 #include <fstream>
 
 namespace dpana
@@ -59,11 +60,51 @@ namespace dpana
 
 
 
+    // Writes the cells of piece @p piece of @p n_pieces to @p filename and,
+    // unless @p record is empty, the .pvtu record of all pieces.
+    template <int dim>
+    void
+    write_vtu_piece(const Body<dim>   &body,
+                    const std::string &filename,
+                    const unsigned int piece,
+                    const unsigned int n_pieces,
+                    const std::string &record);
+
+
+
     template <int dim>
     void
     write_vtu_file(const Body<dim> &body, const std::string &filename)
     {
+      write_vtu_piece(body, filename, 0, 1, "");
+    }
+
+
+
+    template <int dim>
+    void
+    write_vtu_piece(const Body<dim>   &body,
+                    const std::string &filename,
+                    const unsigned int piece,
+                    const unsigned int n_pieces,
+                    const std::string &record)
+    {
       dealii::DataOut<dim> data_out;
+      // Piece p of P holds the active cells of the contiguous index range
+      // [p N / P, (p + 1) N / P): the split changes neither the mesh nor the
+      // numbering of the degrees of freedom, only which cells are written.
+      if (n_pieces > 1)
+        {
+          const std::size_t n     = body.triangulation().n_active_cells();
+          const std::size_t first = n * piece / n_pieces;
+          const std::size_t end   = n * (piece + 1) / n_pieces;
+          data_out.set_cell_selection(
+            [first, end](
+              const typename dealii::Triangulation<dim>::cell_iterator &cell) {
+              return cell->is_active() && cell->active_cell_index() >= first &&
+                     cell->active_cell_index() < end;
+            });
+        }
       data_out.attach_dof_handler(body.dof_handler());
       data_out.add_data_vector(
         body.solution(),
@@ -127,6 +168,17 @@ namespace dpana
       std::ofstream out(filename);
       data_out.write_vtu(out);
       AssertThrow(out, dealii::ExcIO());
+      if (record.empty())
+        return;
+      // The .pvtu record names the pieces, relative to its own directory.
+      const std::filesystem::path path(record);
+      const std::string           base = path.stem().string();
+      std::vector<std::string>    pieces;
+      for (unsigned int p = 0; p < n_pieces; ++p)
+        pieces.push_back(base + "_" + std::to_string(p) + ".vtu");
+      std::ofstream pvtu(record);
+      data_out.write_pvtu_record(pvtu, pieces);
+      AssertThrow(pvtu, dealii::ExcIO());
     }
 
 
@@ -134,15 +186,29 @@ namespace dpana
     template <int dim>
     void
     write_bodies(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
-                 const std::string                             &directory)
+                 const std::string                             &directory,
+                 const unsigned int                             rank,
+                 const unsigned int                             n_ranks)
     {
       std::vector<std::pair<double, std::string>> records;
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const std::string name = "body_" + std::to_string(b + 1) + ".vtu";
-          write_vtu_file(*bodies[b], directory + "/" + name);
-          records.emplace_back(0.0, name);
+          const std::string base = "body_" + std::to_string(b + 1);
+          if (n_ranks == 1)
+            {
+              write_vtu_file(*bodies[b], directory + "/" + base + ".vtu");
+              records.emplace_back(0.0, base + ".vtu");
+              continue;
+            }
+          const std::string piece = base + "_" + std::to_string(rank) + ".vtu";
+          const std::string record =
+            rank == 0 ? directory + "/" + base + ".pvtu" : std::string();
+          write_vtu_piece(
+            *bodies[b], directory + "/" + piece, rank, n_ranks, record);
+          records.emplace_back(0.0, base + ".pvtu");
         }
+      if (rank != 0)
+        return;
       std::ofstream pvd(directory + "/bodies.pvd");
       dealii::DataOutBase::write_pvd_record(pvd, records);
       AssertThrow(pvd, dealii::ExcIO());
@@ -156,9 +222,13 @@ namespace dpana
     write_vtu_file(const Body<3> &, const std::string &);
     template void
     write_bodies(const std::vector<std::unique_ptr<Body<2>>> &,
-                 const std::string &);
+                 const std::string &,
+                 unsigned int,
+                 unsigned int);
     template void
     write_bodies(const std::vector<std::unique_ptr<Body<3>>> &,
-                 const std::string &);
+                 const std::string &,
+                 unsigned int,
+                 unsigned int);
   } // namespace output
 } // namespace dpana

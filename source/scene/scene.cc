@@ -12,6 +12,7 @@
 #include <dpana/scene/input_checks.h>
 #include <dpana/scene/scene.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
@@ -23,6 +24,40 @@ namespace dpana
 {
   namespace scene
   {
+    namespace
+    {
+      // Whether the VTU output of the bodies is written in per-rank pieces.
+      bool
+      writes_in_pieces(const parallel::Route route)
+      {
+        return route == parallel::Route::mpi && parallel::n_world_ranks() > 1;
+      }
+
+
+
+      // The MPI route with several ranks: every rank holds the whole mesh
+      // and solution and writes its share of each body's cells into rank
+      // 0's staging directory (output::write_bodies()). Rank 0 commits the
+      // directory only after the barrier, when all pieces are written.
+      template <int dim>
+      void
+      write_bodies_on_all_ranks(
+        const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+        const std::string                             &root_staging)
+      {
+        const MPI_Comm    comm = MPI_COMM_WORLD;
+        const std::string staging =
+          dealii::Utilities::MPI::broadcast(comm, root_staging, 0);
+        output::write_bodies(bodies,
+                             staging,
+                             dealii::Utilities::MPI::this_mpi_process(comm),
+                             dealii::Utilities::MPI::n_mpi_processes(comm));
+        MPI_Barrier(comm);
+      }
+    } // namespace
+
+
+
     template <int dim>
     Scene<dim>::Scene()
       : phase_log(&std::cout)
@@ -396,7 +431,10 @@ namespace dpana
                           "writing output to " + output_parameters.directory);
         std::ofstream(staging + "/parameters.prm") << parameters_prm;
         std::ofstream(staging + "/parameters.json") << parameters_json;
-        if (output_parameters.write_vtu)
+        if (output_parameters.write_vtu &&
+            writes_in_pieces(condensation_parameters.route))
+          write_bodies_on_all_ranks(bodies, staging);
+        else if (output_parameters.write_vtu)
           output::write_bodies(bodies, staging);
         if (with_contact)
           write_contact_output(staging);
@@ -505,6 +543,9 @@ namespace dpana
       recover();
       if (output)
         write_output(*directory);
+      else if (writes_in_pieces(condensation_parameters.route) &&
+               output_parameters.write_vtu)
+        write_bodies_on_all_ranks(bodies, std::string());
       if (quiet)
         return;
       if (with_contact)

@@ -52,11 +52,19 @@ namespace dpana
     /**
      * Writes DIRECTORY/body_N.vtu for every body and the record
      * DIRECTORY/bodies.pvd that opens them together.
+     *
+     * With @p n_ranks > 1 (the MPI route, every rank holding the whole
+     * mesh) rank @p rank writes only its share of each body's cells, a
+     * contiguous range of the active cell indices, as body_N_RANK.vtu;
+     * rank 0 adds the record body_N.pvtu naming all pieces, and bodies.pvd
+     * opens the .pvtu records. Every rank calls it.
      */
     template <int dim>
     void
     write_bodies(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
-                 const std::string                             &directory);
+                 const std::string                             &directory,
+                 const unsigned int                             rank    = 0,
+                 const unsigned int                             n_ranks = 1);
   } // namespace output
 } // namespace dpana
 
