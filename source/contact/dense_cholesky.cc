@@ -3,25 +3,10 @@
 
 #include <climits>
 
-// LAPACK's Cholesky factorisation and solve (Fortran calling convention,
-// column-major storage).
+// OpenBLAS' thread count; weak, so that another system BLAS without them
+// links as well (the calls are then skipped).
 extern "C"
 {
-  void
-  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
-
-  void
-  dpotrs_(const char   *uplo,
-          const int    *n,
-          const int    *nrhs,
-          const double *a,
-          const int    *lda,
-          double       *b,
-          const int    *ldb,
-          int          *info);
-
-  // OpenBLAS' thread count; weak, so that another system BLAS without them
-  // links as well (the calls are then skipped).
   void
   openblas_set_num_threads(int) __attribute__((weak));
   int

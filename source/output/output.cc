@@ -68,25 +68,6 @@ namespace dpana
                     const std::string &filename,
                     const unsigned int piece,
                     const unsigned int n_pieces,
-                    const std::string &record);
-
-
-
-    template <int dim>
-    void
-    write_vtu_file(const Body<dim> &body, const std::string &filename)
-    {
-      write_vtu_piece(body, filename, 0, 1, "");
-    }
-
-
-
-    template <int dim>
-    void
-    write_vtu_piece(const Body<dim>   &body,
-                    const std::string &filename,
-                    const unsigned int piece,
-                    const unsigned int n_pieces,
                     const std::string &record)
     {
       dealii::DataOut<dim> data_out;
@@ -179,6 +160,15 @@ namespace dpana
       std::ofstream pvtu(record);
       data_out.write_pvtu_record(pvtu, pieces);
       AssertThrow(pvtu, dealii::ExcIO());
+    }
+
+
+
+    template <int dim>
+    void
+    write_vtu_file(const Body<dim> &body, const std::string &filename)
+    {
+      write_vtu_piece(body, filename, 0, 1, "");
     }
 
 

@@ -4,11 +4,12 @@
 #ifndef dpana_linear_algebra_blas_h
 #define dpana_linear_algebra_blas_h
 
-// The three dense level-3 BLAS kernels of the condensation through the Schur
-// complement, declared with the Fortran calling convention of the reference
-// BLAS (every argument by address, column-major storage). They are called
-// directly rather than through Eigen's own products: Eigen's kernels run on
-// one core with the instruction set the library was compiled for (SSE2 for
+// The dense level-3 BLAS kernels of the condensation through the Schur
+// complement and the LAPACK Cholesky routines of the contact solvers
+// (contact::DenseCholesky), declared with the Fortran calling convention of the
+// reference BLAS (every argument by address, column-major storage). They are
+// called directly rather than through Eigen's own products: Eigen's kernels run
+// on one core with the instruction set the library was compiled for (SSE2 for
 // a distribution build), while the system BLAS (OpenBLAS on Debian, the
 // same library CHOLMOD's supernodal factorisation uses) picks the kernels of
 // the processor it runs on and uses every core. On the dense blocks of a 3D
@@ -58,6 +59,22 @@ extern "C"
          const double *beta,
          double       *c,
          const int    *ldc);
+
+  /// LAPACK: the Cholesky factor of a symmetric positive definite A, in
+  /// place (one triangle); info > 0 if A is not positive definite.
+  void
+  dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+
+  /// LAPACK: B <- A^-1 B with the factor of dpotrf_.
+  void
+  dpotrs_(const char   *uplo,
+          const int    *n,
+          const int    *nrhs,
+          const double *a,
+          const int    *lda,
+          double       *b,
+          const int    *ldb,
+          int          *info);
 }
 
 #endif
