@@ -17,6 +17,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 build="${DPANA_BUILD_DIR:-$top/build}"
+. "$here/../common.sh"
 
 out="$here/results"
 args=()
@@ -37,8 +38,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" -j "${DPANA_JOBS:-2}" --target condensation_benchmark
+build_targets condensation_benchmark
 
 mkdir -p "$out"
 case " ${args[*]-} " in
@@ -57,9 +57,6 @@ esac
 # interpreter explicitly (another python3 first on the PATH may lack it),
 # unless PYTHON is set.
 python="${PYTHON:-/usr/bin/python3}"
-if ! "$python" -c "import matplotlib" 2> /dev/null; then
-  echo "run.sh: error: $python cannot import matplotlib (set PYTHON)" >&2
-  exit 1
-fi
+require_matplotlib
 "$python" "$here/plot.py" "$out/results.csv" "$out/condensation.png"
 echo "results in $out"

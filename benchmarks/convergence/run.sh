@@ -17,6 +17,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 build="$(realpath -m "${DPANA_BUILD_DIR:-$top/build}")"
+. "$here/../common.sh"
 python="${PYTHON:-/usr/bin/python3}"
 
 out="$here/results"
@@ -59,10 +60,7 @@ if [ "$getfem" = 1 ]; then
     getfem=0
   fi
 fi
-if ! "$python" -c "import matplotlib" 2> /dev/null; then
-  echo "run.sh: error: $python cannot import matplotlib (set PYTHON)" >&2
-  exit 1
-fi
+require_matplotlib
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null

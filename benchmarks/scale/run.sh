@@ -14,6 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 build="${DPANA_BUILD_DIR:-$top/build}"
+. "$here/../common.sh"
 
 out="$here/results"
 sizes=default
@@ -36,14 +37,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
+build_targets dpana
 
 python="${PYTHON:-/usr/bin/python3}"
-if ! "$python" -c "import matplotlib" 2> /dev/null; then
-  echo "run.sh: error: $python cannot import matplotlib (set PYTHON)" >&2
-  exit 1
-fi
+require_matplotlib
 mkdir -p "$out"
 "$python" "$here/scale.py" --dpana "$build/dpana" --prm-dir "$top/prm" \
   --out "$out" --sizes "$sizes" --scenes "$scenes"

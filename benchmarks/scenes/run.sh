@@ -14,6 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 top="$(cd "$here/../.." && pwd)"
 build="$(realpath -m "${DPANA_BUILD_DIR:-$top/build}")"
+. "$here/../common.sh"
 
 out="$here/results"
 quick=0
@@ -38,8 +39,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
+build_targets dpana
 
 scenes=(receding_2d_mu0 receding_2d_mu1 receding_2d_nu0_mu1 receding_3d_L80)
 if [ "$quick" = 0 ]; then
@@ -67,10 +67,7 @@ for s in "${scenes[@]}"; do
 done
 
 python="${PYTHON:-/usr/bin/python3}"
-if ! "$python" -c "import matplotlib" 2> /dev/null; then
-  echo "run.sh: error: $python cannot import matplotlib (set PYTHON)" >&2
-  exit 1
-fi
+require_matplotlib
 "$python" "$here/table.py" "$out" "${scenes[@]}"
 echo "results in $out"
 exit $status
