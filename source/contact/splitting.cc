@@ -237,10 +237,11 @@ namespace dpana
       inner_options(const SolverOptions &options)
       {
         InnerOptions inner;
-        inner.tolerance       = options.inner_tolerance;
-        inner.max_iterations  = options.inner_max_iterations;
-        inner.over_relaxation = options.over_relaxation;
-        inner.augmentation    = options.augmentation;
+        inner.tolerance        = options.inner_tolerance;
+        inner.max_iterations   = options.inner_max_iterations;
+        inner.over_relaxation  = options.over_relaxation;
+        inner.augmentation     = options.augmentation;
+        inner.partition_sweeps = options.partition_sweeps;
         return inner;
       }
 

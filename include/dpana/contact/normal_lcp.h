@@ -47,6 +47,10 @@ namespace dpana
       unsigned int max_iterations  = 10000;
       double       over_relaxation = 1.0;
       double       augmentation    = 1.0;
+      // Active-set T-step only (friction_qp.h): at most this many projected
+      // Gauss-Seidel sweeps before the Newton steps, to find the stick /
+      // slip partition; 0: none.
+      unsigned int partition_sweeps = 0;
     };
 
     struct InnerResult

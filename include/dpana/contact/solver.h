@@ -86,6 +86,12 @@ namespace dpana
       // clamp(0.1 * last outer residual, inner_tolerance, 1e-4) instead of
       // inner_tolerance throughout.
       bool adaptive_inner_tolerance = true;
+      // Splitting with active-set inner solvers only: before the Newton
+      // steps of a T-step of at least FrictionQp::partition_sweep_size
+      // tangential unknowns, projected Gauss-Seidel sweeps (in chunks of
+      // five, until a chunk leaves the stick / slip partition unchanged) find
+      // the partition, at most this many; 0: none (friction_qp.h).
+      unsigned int partition_sweeps = 200;
       // Splitting only (the robust mode of the default solver): when the
       // splitting stops without converging (stall, cycling, stagnation,
       // iteration cap), solve again by Alart-Curnier from the splitting's
