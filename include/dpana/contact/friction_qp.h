@@ -163,9 +163,9 @@ namespace dpana
       project_onto_sets(const Eigen::VectorXd &radius,
                         Eigen::VectorXd       &T) const;
 
-      // PGS sweeps, in chunks, until a chunk leaves the regions of the
-      // natural map unchanged or options.partition_sweeps are made; F and
-      // the regions are those of the final (T, beta). Returns the sweeps.
+      // PGS sweeps, in chunks, until two chunks in a row leave the regions
+      // of the natural map unchanged or options.partition_sweeps are made; F
+      // and the regions are those of the final (T, beta). Returns the sweeps.
       unsigned int
       settle_partition(const Eigen::VectorXd &c,
                        const Eigen::VectorXd &radius,

@@ -89,8 +89,9 @@ namespace dpana
       // Splitting with active-set inner solvers only: before the Newton
       // steps of a T-step of at least FrictionQp::partition_sweep_size
       // tangential unknowns, projected Gauss-Seidel sweeps (in chunks of
-      // five, until a chunk leaves the stick / slip partition unchanged) find
-      // the partition, at most this many; 0: none (friction_qp.h).
+      // five, until two chunks in a row leave the stick / slip partition
+      // unchanged) find the partition, at most this many; 0: none
+      // (friction_qp.h).
       unsigned int partition_sweeps = 200;
       // Splitting only (the robust mode of the default solver): when the
       // splitting stops without converging (stall, cycling, stagnation,
