@@ -531,7 +531,7 @@ namespace dpana
           }
         return accepted;
       };
-      if (options.partition_sweeps > 0 && q >= partition_sweep_size &&
+      if (options.partition_sweeps > 0 && q >= options.partition_sweep_size &&
           !active_set_converged(F, radius, e, T))
         settle_partition(c, radius, e, T, beta, F);
       if (!active_set_converged(F, radius, e, T) && predictor_step(F, dx) &&

@@ -237,11 +237,12 @@ namespace dpana
       inner_options(const SolverOptions &options)
       {
         InnerOptions inner;
-        inner.tolerance        = options.inner_tolerance;
-        inner.max_iterations   = options.inner_max_iterations;
-        inner.over_relaxation  = options.over_relaxation;
-        inner.augmentation     = options.augmentation;
-        inner.partition_sweeps = options.partition_sweeps;
+        inner.tolerance            = options.inner_tolerance;
+        inner.max_iterations       = options.inner_max_iterations;
+        inner.over_relaxation      = options.over_relaxation;
+        inner.augmentation         = options.augmentation;
+        inner.partition_sweeps     = options.partition_sweeps;
+        inner.partition_sweep_size = options.partition_sweep_size;
         return inner;
       }
 

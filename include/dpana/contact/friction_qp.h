@@ -40,7 +40,8 @@
 //     partition of the previous solve's last step, kept if it passes the
 //     Armijo test (friction_qp.cc). The line search moves w = M T + c along
 //     the step instead of multiplying by M at every trial point.
-//     On large problems (at least partition_sweep_size tangential unknowns)
+//     On large problems (InnerOptions::partition_sweep_size tangential
+//     unknowns and more)
 //     the Newton steps are preceded by projected Gauss-Seidel sweeps that
 //     find the stick / slip partition (settle_partition in friction_qp.cc):
 //     a Newton step whose partition differs from the last one's costs a
@@ -89,14 +90,6 @@ namespace dpana
                        const Eigen::VectorXd &e,
                        Eigen::VectorXd       &T,
                        Eigen::VectorXd       &beta);
-
-      // The smallest number of tangential unknowns at which solve_active_set
-      // sweeps for the partition before its Newton steps (if
-      // InnerOptions::partition_sweeps > 0). Below it a factorisation costs
-      // less than the sweeps: measured on the 3D receding block (mu = 1, disc)
-      // the sweeps made the splitting 1.8 to 2.5 times slower at 512
-      // tangential unknowns and 1.4 to 2.4 times faster at 1152 and more.
-      static constexpr Eigen::Index partition_sweep_size = 1000;
 
       // Change the tolerance of the following solves (the splitting tightens
       // it as the outer residual decreases).

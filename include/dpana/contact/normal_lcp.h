@@ -51,6 +51,8 @@ namespace dpana
       // Gauss-Seidel sweeps before the Newton steps, to find the stick /
       // slip partition; 0: none.
       unsigned int partition_sweeps = 0;
+      // ... in T-steps of at least this many tangential unknowns.
+      unsigned int partition_sweep_size = 1000;
     };
 
     struct InnerResult
