@@ -32,7 +32,10 @@ def load(directory):
         with open(path) as f:
             data = json.load(f)
         if isinstance(data, dict) and "records" in data:
-            ok = [r for r in data["records"] if "failed" not in r]
+            # A level whose solver did not converge carries no answer: it
+            # is listed by the sweep (NOT converged) but left out here.
+            ok = [r for r in data["records"]
+                  if "failed" not in r and r.get("converged", True)]
             runs[(data["code"], data["family"])] = {**data, "ok": ok}
     return runs
 

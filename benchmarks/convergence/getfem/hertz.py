@@ -10,7 +10,9 @@ contact point (the boundary chord of dpana's quarter disc with L global
 and 5 contact refinements), growing to 32 h_c (at most R/4) at 28 mm.
 Candidate contact nodes: the arc within x <= 15 mm.
   --ratio E1/E2   instead of the rigid plane, the elastic foundation of
-                  prm/hertz_ratio_*: [0, 80] x [-80, 0] (symmetry on x = 0,
+                  prm/hertz_ratio_*, the softer of the two bodies with
+                  E = 130000 MPa as in those scenes (E1 = E max(1, ratio),
+                  E2 = E1 / ratio): [0, 80] x [-80, 0] (symmetry on x = 0,
                   fixed at its base), meshed by gmsh with the same size
                   field around the contact point as the body (whose
                   refinement radius becomes dpana's 17 mm there);
@@ -54,17 +56,18 @@ def solve(gf, msh, ratio, args):
         mesh, lambda x, y: x <= width + 1e-9 and y < R
         and abs(math.hypot(x, y - R) - R) < 1e-6 * R))
     mesh.set_region(AXIS, boundary_faces(mesh, lambda x, y: abs(x) < 1e-9))
-    body = ElasticBody(mesh, E, NU)
+    E1 = E * max(1.0, ratio or 1.0)
+    body = ElasticBody(mesh, E1, NU)
     body.symmetry(AXIS)
     dofs = body.mfu.nbdof()
     if ratio is None:
         body.contact(CONTACT, E)
     else:
-        base = ElasticBody(foundation(gf, msh[1]), E / ratio, NU,
+        base = ElasticBody(foundation(gf, msh[1]), E1 / ratio, NU,
                            model=body.md, name="v", held=True)
         base.symmetry(F_LEFT)
         base.fixed(F_BASE)
-        body.contact_with(base, CONTACT, F_TOP, min(E, E / ratio))
+        body.contact_with(base, CONTACT, F_TOP, min(E1, E1 / ratio))
         dofs += base.mfu.nbdof()
     pole = (0.0, 2 * R) if args.body == "circle" else (0.0, R)
     body.point_force(pole, 1, -P / 2)
@@ -99,7 +102,8 @@ def main():
     record["h_c"] = hc
     # Plane Hertz: a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a), with
     # 1/E* = (1 - nu^2) (1/E1 + 1/E2).
-    inv = (1 - NU * NU) / E * (1 + (args.ratio or 0.0))
+    E1 = E * max(1.0, args.ratio or 1.0)
+    inv = (1 - NU * NU) / E1 * (1 + (args.ratio or 0.0))
     a = math.sqrt(4 * P * R * inv / math.pi)
     record["hertz"] = {"a": a, "N_max": 2 * P / (math.pi * a)}
     record["meshing_time"] = meshing

@@ -17,6 +17,9 @@ families.py):
                             the elastic foundation, mu = 1)
   hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
                             body on the elastic block, equal moduli)
+  hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
+                            hertz.py --body circle --ratio 1e-3, 1e3 (the
+                            body on a block 1000 times stiffer, softer)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
   hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
 
@@ -53,6 +56,10 @@ FAMILIES = {
                            [5]),
     "hertz_ratio_1_mu0": (["hertz.py", "--body", "circle", "--ratio", "1"],
                           range(0, 4), [4]),
+    "hertz_ratio_1e-3_mu0": (["hertz.py", "--body", "circle", "--ratio",
+                              "1e-3"], range(0, 4), [4]),
+    "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
+                             "1e3"], range(0, 4), [4]),
     "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
     "hertz_sphere_rigid": (["sphere.py"], range(0, 4), [4]),
 }
