@@ -207,4 +207,20 @@ FAMILIES.append(Family(
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN (3D Hertz: "
          "a = 4.050 mm, p0 = 8730 MPa)"))
 
+# The two equal spheres: the upper one on dpana's sphere mesh, the lower one
+# (the mirror image) on the mesh of the scene's mesh line
+# (make_sphere.py --side -1 --set CapRadius=7.5), both at level L.
+LOWER_SPHERE = ("--side", "-1", "--set", "CapRadius=7.5")
+for name, mu in (("hertz_two_spheres", "frictionless"),
+                 ("hertz_two_spheres_mu03", "mu = 0.3")):
+    FAMILIES.append(Family(
+        name, f"{name}.prm", 3,
+        sphere(range(0, 5), (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
+        sphere([5], (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
+        quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
+        exact={"resultant": 75000.0},
+        note=f"Two equal spheres R = 40, P = 300 kN, {mu} (3D Hertz as "
+             "for one sphere on a rigid plane: a = 4.050 mm, "
+             "p0 = 8730 MPa)"))
+
 BY_NAME = {f.name: f for f in FAMILIES}

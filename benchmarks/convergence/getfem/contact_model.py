@@ -35,6 +35,52 @@ def boundary_faces(mesh, keep):
     return faces[:, chosen]
 
 
+def region_faces(mesh, region):
+    """The vertex coordinates (dim x dim) of every face of region."""
+    faces = mesh.region(region)
+    return [mesh.pts(mesh.pid_in_faces(faces[:, j:j + 1]))
+            for j in range(faces.shape[1])]
+
+
+def nearest_faces(points, faces):
+    """For each point (column of points), the vertex columns of the face
+    of faces (a list of dim x dim arrays: segments in 2D, triangles in 3D)
+    nearest to it."""
+    xyz = np.array(faces)                      # faces x dim x vertices
+    chosen = []
+    for p in points.T:
+        if xyz.shape[2] == 2:
+            dist = point_segment_distances(p, xyz[:, :, 0], xyz[:, :, 1])
+        else:
+            dist = point_triangle_distances(p, xyz)
+        chosen.append(faces[int(np.argmin(dist))])
+    return chosen
+
+
+def point_segment_distances(p, a, b):
+    """Distances of the point p from the segments a[k]-b[k] (rows)."""
+    d = b - a
+    t = np.clip(((p - a) * d).sum(1) / (d * d).sum(1), 0.0, 1.0)
+    return np.linalg.norm(p - a - t[:, None] * d, axis=1)
+
+
+def point_triangle_distances(p, xyz):
+    """Distances of the point p from the triangles of vertex columns
+    xyz[k] (3 x 3): the distance to the plane where p projects inside the
+    triangle, otherwise to the nearest edge."""
+    a, b, c = xyz[:, :, 0], xyz[:, :, 1], xyz[:, :, 2]
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    height = ((p - a) * n).sum(1)
+    q = p - height[:, None] * n
+    inside = np.ones(len(a), dtype=bool)
+    for u, v in ((a, b), (b, c), (c, a)):
+        inside &= (np.cross(v - u, q - u) * n).sum(1) >= 0
+    edges = np.min([point_segment_distances(p, u, v)
+                    for u, v in ((a, b), (b, c), (c, a))], axis=0)
+    return np.where(inside, np.abs(height), edges)
+
+
 def face_measure(xyz):
     """Length (2D) or area (3D) of a face given by its vertex columns."""
     if xyz.shape[0] == 2:
@@ -133,6 +179,35 @@ class ElasticBody:
         self.md.add_nodal_contact_between_nonmatching_meshes_brick(
             self.mim, other.mim, self.name, other.name, *names, region,
             other_region)
+        self.master_directions(other, other_region, mu > 0)
+
+    def master_directions(self, other, other_region, friction):
+        """The multipliers of the brick between non-matching meshes act
+        along the normal (and in 2D the tangent) of the master face onto
+        which the slave node projects, in the reference configuration. For
+        the force along the contact direction y, which dpana's N measures,
+        keep per slave node |n_y| of that face and, in 2D with friction,
+        t_y of its tangent t (oriented with t_x > 0): F_y = |lambda_n| |n_y|
+        - lambda_t t_y. Both are checked by the resultant: on the curved
+        cavity (|n_y| down to 0.99) the F_y carry the load to 1e-9, the
+        |lambda_n| 2e-3 more. On a flat master n_y = 1 and t_y = 0 exactly.
+        In 3D the tangential multipliers' part is left out (their basis is
+        GetFEM's); the resultant then shows its size."""
+        nodes = self.mfu.basic_dof_nodes(self.contact_dofs)
+        faces = nearest_faces(nodes, region_faces(other.mesh, other_region))
+        normal_y, tangent_y = [], []
+        for xyz in faces:
+            if xyz.shape[1] == 2:
+                t = xyz[:, 1] - xyz[:, 0]
+                t = t / np.linalg.norm(t) * (1 if t[0] > 0 else -1)
+                normal_y.append(abs(t[0]))
+                tangent_y.append(t[1])
+            else:
+                n = np.cross(xyz[:, 1] - xyz[:, 0], xyz[:, 2] - xyz[:, 0])
+                normal_y.append(abs(n[1]) / np.linalg.norm(n))
+        self.normal_y = np.array(normal_y)
+        self.tangent_y = (np.array(tangent_y)
+                          if friction and self.dim == 2 else None)
 
     def solve(self, residual, max_iter=100):
         nit, converged = self.md.solve("max_res", residual, "max_iter",
@@ -150,9 +225,16 @@ class ElasticBody:
 
     def nodal_pressures(self):
         """Contact nodes (coordinates, dim x n), the nodal force F >= 0 (N/mm
-        in 2D, N in 3D) and the pressure p = F / (the tributary length or
+        in 2D, N in 3D; between two bodies its part along y, see
+        master_directions()) and the pressure p = F / (the tributary length or
         area: half of each adjacent contact face in 2D, a third in 3D)."""
         lam = np.asarray(self.md.variable("lambda_n")).ravel()
+        force = np.abs(lam)
+        if getattr(self, "normal_y", None) is not None:
+            force = force * self.normal_y
+            if self.tangent_y is not None:
+                force -= (np.asarray(self.md.variable("lambda_t")).ravel()
+                          * self.tangent_y)
         nodes = self.mfu.basic_dof_nodes(self.contact_dofs)
         faces = self.mesh.region(self.contact_region)
         tributary = {}
@@ -164,7 +246,6 @@ class ElasticBody:
                 tributary[key] = tributary.get(key, 0.0) + share
         trib = np.array([tributary[tuple(round(c, 9) for c in node)]
                          for node in nodes.T])
-        force = np.abs(lam)
         return nodes, force, force / trib
 
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """GetFEM harness: the Hertz cylinder R = 40 mm (E = 130000 MPa, nu = 0.2,
-plane strain) on a rigid plane, frictionless, half model x >= 0, loaded
+plane strain) on a rigid plane, frictionless (see --mu), half model x >= 0, loaded
 along its axis by half the line load P = 200 kN/mm:
   --body circle   the circular body, force at its far pole (0, 2R);
   --body dshape   the quarter disc below the centre (dpana's hertz_rigid
@@ -19,6 +19,19 @@ Candidate contact nodes: the arc within x <= 15 mm.
                   GetFEM's nodal brick between non-matching meshes, the
                   arc x <= 16 mm the slave side, the foundation's top
                   x <= 20 mm the master side.
+  --cavity        instead, the body with the cylindrical cavity of
+                  prm/hertz_cavity_* (equal moduli, E = 130000 MPa): the
+                  lower right quarter of the ring 120 <= r <= 360 around
+                  (0, 120), symmetry on x = 0, fixed on its outer circle,
+                  held vertically on its cut y = 120; the size field of
+                  both bodies within dpana's refinement radius there,
+                  21 mm; the arc x <= 20 mm (dpana's candidate half width)
+                  the slave side, the cavity's arc x <= 24 mm the master.
+  --mu MU         Coulomb friction MU (the *_mu1 scenes: 1) in the same
+                  nodal brick (its tangential multipliers), residual 1e-10
+                  of the load instead of 1e-8 (see solve()).
+Between two bodies the pressures are the nodal forces along y (see
+contact_model.ElasticBody.master_directions).
 
 Prints one JSON record: sizes, Newton iterations, the time of the GetFEM
 work (mesh import, assembly and solve; the gmsh meshing is timed apart)
@@ -34,7 +47,9 @@ from contact_model import ElasticBody, boundary_faces, emit
 from mesh import hertz_mesh
 
 R, E, NU, P = 40.0, 130000.0, 0.2, 200000.0
-CONTACT, AXIS, F_TOP, F_LEFT, F_BASE = 10, 11, 20, 21, 22
+CONTACT, AXIS, F_TOP, F_LEFT, F_BASE, F_CUT = 10, 11, 20, 21, 22, 23
+# The cavity: radius and centre of its inner circle, its outer radius.
+R_CAVITY, Y_CAVITY, R_OUTER = 3 * R, 3 * R, 9 * R
 
 
 def foundation(gf, msh):
@@ -48,10 +63,28 @@ def foundation(gf, msh):
     return mesh
 
 
+def cavity(gf, msh):
+    """The body with the cavity and its regions: the inner arc near the
+    contact point (master side), the axis, the outer circle, the cut."""
+    mesh = gf.Mesh("import", "gmsh", msh)
+
+    def on_circle(x, y, radius):
+        return abs(math.hypot(x, y - Y_CAVITY) - radius) < 1e-6 * radius
+
+    mesh.set_region(F_TOP, boundary_faces(
+        mesh, lambda x, y: x <= 24 + 1e-9 and on_circle(x, y, R_CAVITY)))
+    mesh.set_region(F_LEFT, boundary_faces(mesh, lambda x, y: abs(x) < 1e-9))
+    mesh.set_region(F_BASE, boundary_faces(
+        mesh, lambda x, y: on_circle(x, y, R_OUTER)))
+    mesh.set_region(F_CUT, boundary_faces(
+        mesh, lambda x, y: abs(y - Y_CAVITY) < 1e-9))
+    return mesh
+
+
 def solve(gf, msh, ratio, args):
     """Builds and solves the model; returns the body and its record."""
     mesh = gf.Mesh("import", "gmsh", msh[0])
-    width = 15 if ratio is None else 16
+    width = 15 if ratio is None else 20 if args.cavity else 16
     mesh.set_region(CONTACT, boundary_faces(
         mesh, lambda x, y: x <= width + 1e-9 and y < R
         and abs(math.hypot(x, y - R) - R) < 1e-6 * R))
@@ -61,20 +94,33 @@ def solve(gf, msh, ratio, args):
     body.symmetry(AXIS)
     dofs = body.mfu.nbdof()
     if ratio is None:
-        body.contact(CONTACT, E)
+        body.contact(CONTACT, E, args.mu)
     else:
-        base = ElasticBody(foundation(gf, msh[1]), E1 / ratio, NU,
-                           model=body.md, name="v", held=True)
+        if args.cavity:
+            base = ElasticBody(cavity(gf, msh[1]), E1 / ratio, NU,
+                               model=body.md, name="v", held=True)
+            base.symmetry(F_CUT)
+        else:
+            base = ElasticBody(foundation(gf, msh[1]), E1 / ratio, NU,
+                               model=body.md, name="v", held=True)
         base.symmetry(F_LEFT)
         base.fixed(F_BASE)
-        body.contact_with(base, CONTACT, F_TOP, min(E1, E1 / ratio))
+        body.contact_with(base, CONTACT, F_TOP, min(E1, E1 / ratio), args.mu)
         dofs += base.mfu.nbdof()
     pole = (0.0, 2 * R) if args.body == "circle" else (0.0, R)
     body.point_force(pole, 1, -P / 2)
-    # Residual 1e-8 of the load: answers and Newton iterations are the same
-    # as with 1e-11 of it (checked on levels 2 and 3); 1e-14 of it is below
-    # the round-off floor and does not converge.
-    nit, converged = body.solve(1e-8 * P)
+    # Frictionless, a residual of 1e-8 of the load: answers and Newton
+    # iterations are the same as with 1e-11 of it (checked on levels 2 and
+    # 3); 1e-14 of it is below the round-off floor and does not converge.
+    # With friction the contact rows are divided by r, as on the receding
+    # block, where 1e-8 of the load let Newton stop on a wrong active set:
+    # 1e-10 of it, times E1/E where the body is the stiffer one (the
+    # round-off floor grows with the modulus: for E1/E2 = 1e3, 1e-10 of the
+    # load is not reached in 100 iterations at level 0, on answers that
+    # agree to 1e-11 with those reached at 1e-8 and 1e-7 of it, which also
+    # agree at level 2).
+    tolerance = 1e-8 if args.mu == 0 else 1e-10 * E1 / E
+    nit, converged = body.solve(tolerance * P)
     return body.record(nit, converged, dofs)
 
 
@@ -86,25 +132,38 @@ def main():
     parser.add_argument("--ratio", type=float, default=None,
                         help="E1/E2 of an elastic foundation (default: "
                         "the rigid plane)")
+    parser.add_argument("--cavity", action="store_true",
+                        help="the foundation is the body with the cavity "
+                        "(E1/E2 = 1)")
+    parser.add_argument("--mu", type=float, default=0.0,
+                        help="Coulomb friction coefficient (default 0)")
     args = parser.parse_args()
+    if args.cavity:
+        if args.ratio not in (None, 1.0):
+            parser.error("--cavity has equal moduli: no --ratio")
+        args.ratio = 1.0
+    if args.mu < 0:
+        parser.error("--mu must be >= 0")
     hc = (math.pi * R / 4) / 2 ** (args.level + 5)
-    rho = 14.0 if args.ratio is None else 17.0
+    rho = 14.0 if args.ratio is None else 21.0 if args.cavity else 17.0
     with tempfile.TemporaryDirectory(prefix="getfem_hertz_") as tmp:
         start = time.perf_counter()
         msh = [hertz_mesh(args.body, R, hc, min(32 * hc, R / 4), rho, tmp)]
         if args.ratio is not None:
-            msh.append(hertz_mesh("block", R, hc, min(32 * hc, R / 4), rho,
-                                  tmp))
+            msh.append(hertz_mesh("cavity" if args.cavity else "block", R,
+                                  hc, min(32 * hc, R / 4), rho, tmp))
         meshing = time.perf_counter() - start
         import getfem as gf
         start = time.perf_counter()
         record = solve(gf, msh, args.ratio, args)
     record["h_c"] = hc
-    # Plane Hertz: a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a), with
-    # 1/E* = (1 - nu^2) (1/E1 + 1/E2).
+    # Plane Hertz: a = sqrt(4 P R* / (pi E*)), p0 = 2 P / (pi a), with
+    # 1/E* = (1 - nu^2) (1/E1 + 1/E2) and 1/R* = 1/R - 1/R_cavity (the
+    # cavity: R* = 60 mm) or 1/R (a plane).
     E1 = E * max(1.0, args.ratio or 1.0)
     inv = (1 - NU * NU) / E1 * (1 + (args.ratio or 0.0))
-    a = math.sqrt(4 * P * R * inv / math.pi)
+    radius = 1 / (1 / R - 1 / R_CAVITY) if args.cavity else R
+    a = math.sqrt(4 * P * radius * inv / math.pi)
     record["hertz"] = {"a": a, "N_max": 2 * P / (math.pi * a)}
     record["meshing_time"] = meshing
     emit(record, start)

@@ -7,9 +7,13 @@ point (0, 0) touches the plane y = 0 (centre (0, R)):
   dshape  the lower half of that half, the quarter disc below the centre
           (the body of dpana's hertz_rigid_mu0_d_shaped scene); its edges
           are the axis (0, 0)-(0, R) and the flat side y = R.
-And the elastic foundation of the two-body Hertz scenes:
+And the elastic foundations of the two-body Hertz scenes:
   block   the square [0, 2R] x [-2R, 0] below the contact point (the half
-          of the 4R x 2R foundation).
+          of the 4R x 2R foundation);
+  cavity  the body with the cylindrical cavity of prm/hertz_cavity_*: the
+          lower right quarter of the ring 3R <= r <= 9R around (0, 3R),
+          whose inner circle touches the cylinder at (0, 0); its edges are
+          the axis x = 0 below the contact point and the cut y = 3R.
 Element size h_c within the distance rho of the contact point, growing
 linearly to h_far at the distance 2 rho (gmsh Distance and Threshold
 fields), P1 triangles.
@@ -61,6 +65,19 @@ Line(5) = {7, 1};
 Curve Loop(1) = {2, 3, 4, 5};
 Plane Surface(1) = {1};
 Physical Surface(1) = {1};""",
+    # inner arc (0,0)-(3R,3R), cut (3R,3R)-(9R,3R), outer arc (9R,3R)-
+    # (0,-6R), axis (0,-6R)-(0,0); all around the centre (0, 3R)
+    "cavity": """Point(5) = {0, 3 * R, 0};
+Point(6) = {3 * R, 3 * R, 0};
+Point(7) = {9 * R, 3 * R, 0};
+Point(8) = {0, -6 * R, 0};
+Circle(2) = {1, 5, 6};
+Line(3) = {6, 7};
+Circle(4) = {7, 5, 8};
+Line(5) = {8, 1};
+Curve Loop(1) = {2, 3, 4, 5};
+Plane Surface(1) = {1};
+Physical Surface(1) = {1};""",
     "dshape": """Line(2) = {3, 2};
 Line(4) = {2, 1};
 Curve Loop(1) = {1, 2, 4};
@@ -72,7 +89,8 @@ Physical Surface(1) = {1};""",
 def hertz_mesh(body, radius, hc, hfar, rho, directory):
     """Writes and meshes the .geo of body; returns the path of the .msh."""
     if body not in OUTLINES:
-        raise ValueError(f"unknown body '{body}' (circle, dshape, block)")
+        raise ValueError(f"unknown body '{body}' "
+                         f"({', '.join(OUTLINES)})")
     geo = os.path.join(directory, f"{body}.geo")
     msh = os.path.join(directory, f"{body}.msh")
     with open(geo, "w") as f:

@@ -10,6 +10,18 @@ symmetry conditions, the cap `contact` (3, r <= 6 mm) the candidate nodes.
 3D Hertz: a = (3 P R / (4 E*))^(1/3) = 4.050 mm, p0 = 3 P / (2 pi a^2) =
 8730 MPa, 1/E* = (1 - nu^2) / E.
 
+  --two     the two spheres of prm/hertz_two_spheres.prm: below the
+            upper sphere (the one above) its mirror image, centre
+            (0, -R, 0), on dpana's mesh of it (make_sphere.py --side -1
+            --set CapRadius=7.5: a contact cap of 7.5 mm, which covers the
+            upper one's), symmetric in x and z, fixed on its far cap
+            `pole` (4, r <= 4 mm around (0, -2R, 0)); GetFEM's nodal brick
+            between non-matching meshes, the upper cap the slave side, the
+            lower cap the master side, augmentation r = E. Hertz with
+            1/R* = 2/R and 1/E* = 2 (1 - nu^2)/E: the same a and p0.
+  --mu MU   Coulomb friction MU (hertz_two_spheres_mu03.prm: 0.3).
+Residual 1e-10 of the load.
+
 Prints one JSON record (see hertz.py).
 """
 
@@ -26,31 +38,51 @@ sys.path.insert(0, os.path.dirname(HERE))
 from families import SphereMesh  # noqa: E402  (benchmarks/convergence/)
 
 R, E, NU, P = 40.0, 130000.0, 0.2, 300000.0
-SYM_X, SYM_Z, CONTACT = 1, 2, 3
+SYM_X, SYM_Z, CONTACT, POLE = 1, 2, 3, 4
+# dpana's mesh options of the lower sphere (prm/hertz_two_spheres.prm)
+LOWER = ("--side", "-1", "--set", "CapRadius=7.5")
 
 
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--level", type=int, required=True)
+    parser.add_argument("--two", action="store_true",
+                        help="two spheres instead of one on the plane")
+    parser.add_argument("--mu", type=float, default=0.0,
+                        help="Coulomb friction coefficient (default 0)")
     args = parser.parse_args()
+    if args.mu < 0:
+        parser.error("--mu must be >= 0")
+    prm = os.path.join(HERE, "..", "..", "..", "prm")
     start = time.perf_counter()
-    msh = SphereMesh(args.level).path(
-        os.path.join(HERE, "..", "..", "..", "prm"))
+    msh = [SphereMesh(args.level).path(prm)]
+    if args.two:
+        msh.append(SphereMesh(args.level, *LOWER).path(prm))
     meshing = time.perf_counter() - start
     import getfem as gf
     start = time.perf_counter()
-    mesh = gf.Mesh("import", "gmsh", msh)
-    body = ElasticBody(mesh, E, NU)
+    body = ElasticBody(gf.Mesh("import", "gmsh", msh[0]), E, NU)
     body.symmetry(SYM_X)
     body.symmetry(SYM_Z)
-    body.contact(CONTACT, E)
+    dofs = body.mfu.nbdof()
+    if args.two:
+        lower = ElasticBody(gf.Mesh("import", "gmsh", msh[1]), E, NU,
+                            model=body.md, name="v", held=True)
+        lower.symmetry(SYM_X)
+        lower.symmetry(SYM_Z)
+        lower.fixed(POLE)
+        body.contact_with(lower, CONTACT, CONTACT, E, args.mu)
+        dofs += lower.mfu.nbdof()
+    else:
+        body.contact(CONTACT, E, args.mu)
     body.point_force((0.0, 2 * R, 0.0), 1, -P / 4)
     # 1e-10 of the load: at level 3, 1e-12 of it is below the round-off
     # floor (100 iterations without convergence, the answers to 7 digits
     # those of 1e-10, reached in 10 iterations).
     nit, converged = body.solve(1e-10 * P)
+    # Hertz: E* and R* both halve for two equal spheres, a and p0 stay.
     a = (3 * P * R * (1 - NU * NU) / (4 * E)) ** (1 / 3)
-    emit(body.record(nit, converged, meshing_time=meshing, hertz={
+    emit(body.record(nit, converged, dofs, meshing_time=meshing, hertz={
         "a": a, "N_max": 3 * P / (2 * math.pi * a * a)}), start)
 
 

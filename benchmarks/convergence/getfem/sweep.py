@@ -20,8 +20,15 @@ families.py):
   hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
+  hertz_rigid_mu1, hertz_ratio_*_mu1
+                            the same with --mu 1 (Coulomb friction)
+  hertz_cavity_mu0, hertz_cavity_mu1
+                            hertz.py --body circle --cavity [--mu 1] (the
+                            circular body in the cavity R = 120 mm)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
   hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
+  hertz_two_spheres, hertz_two_spheres_mu03
+                            sphere.py --two [--mu 0.3] (two equal spheres)
 
   sweep.py --out results [--full] [--repeat N] [FAMILY ...]
 """
@@ -60,9 +67,22 @@ FAMILIES = {
                               "1e-3"], range(0, 4), [4]),
     "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                              "1e3"], range(0, 4), [4]),
+    "hertz_rigid_mu1": (["hertz.py", "--body", "circle", "--mu", "1"],
+                        range(-2, 5), [5]),
+    "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
+                         range(0, 4), [4]),
+    "hertz_cavity_mu1": (["hertz.py", "--body", "circle", "--cavity", "--mu",
+                          "1"], range(0, 4), [4]),
     "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
     "hertz_sphere_rigid": (["sphere.py"], range(0, 4), [4]),
+    "hertz_two_spheres": (["sphere.py", "--two"], range(0, 3), [3]),
+    "hertz_two_spheres_mu03": (["sphere.py", "--two", "--mu", "0.3"],
+                               range(0, 3), [3]),
 }
+for ratio in ("1", "1e-3", "1e3"):
+    FAMILIES[f"hertz_ratio_{ratio}_mu1"] = (
+        ["hertz.py", "--body", "circle", "--ratio", ratio, "--mu", "1"],
+        range(0, 4), [4])
 # h of a level, in the units of the dpana family (families.py).
 H = {"hertz.py": lambda level: 2.0 ** -level,
      "receding.py": lambda level: 40.0 / (4 * 2 ** level),
