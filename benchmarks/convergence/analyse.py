@@ -16,6 +16,7 @@ family).
 """
 
 import glob
+import itertools
 import json
 import os
 import sys
@@ -244,8 +245,11 @@ def plot_all(summary, directory, plt):
     """speed_vs_error.png: the first plotted quantity of every family
     (dpana), unless its errors are round-off."""
     fig, (ax_t, ax_d) = plt.subplots(1, 2, figsize=(12, 5.5))
-    colours = iter(plt.get_cmap("tab20").colors)
-    markers = iter(["o-", "s-", "^-", "v-", "D-", "<-", ">-", "p-"] * 3)
+    # More families than the 20 colours: colours and markers cycle
+    # (the pairs repeat only after 40 families).
+    colours = itertools.cycle(plt.get_cmap("tab20").colors)
+    markers = itertools.cycle(["o-", "s-", "^-", "v-", "D-", "<-", ">-",
+                               "p-"])
     for name, codes in summary.items():
         if "dpana" not in codes:
             continue
