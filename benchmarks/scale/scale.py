@@ -18,6 +18,13 @@ Scenes:
                 rigid plane, its gmsh mesh at levels 2..4 (--full: ..5),
                 made by scripts/meshes/make_meshes.py in the run's folder;
                 skipped with a note otherwise;
+  layer         prm/scale/receding_layer_1M.prm: the 2 mm layer pressed
+                onto a rigid foundation over a square, n x h x n bricks
+                (cells of 40/n mm across, h = 8n/200 layers), the candidate
+                square |x|, |z| <= 11.6 mm of the bottom one contact
+                element per square: n = 40, 80 (--quick), .. 160 (default),
+                .. 200 (--full: 1.09 million unknowns, 10 092 contact
+                unknowns), or the n of --bricks;
   sphere_scale  prm/scale/hertz_sphere_scale.prm: the same sphere on the
                 graded meshes of the scale family, levels 0, 2 (--quick),
                 .. 4 (default), .. 6 (--full: 1.16 million unknowns, about
@@ -57,6 +64,23 @@ def receding_cases(prm_dir, sizes, chosen=None):
         body = re.sub(r"set Subdivisions\s*=.*",
                       "set Subdivisions = %d, %d, %d" % (m, h, m), text)
         yield label, body
+
+
+def layer_cases(prm_dir, sizes, chosen=None):
+    """The layer of prm/scale/receding_layer_1M.prm with n x h x n bricks:
+    the physical scene stays (2 mm layer, 4 mm patch, candidate square of
+    11.6 mm), the mesh is refined across and through the thickness
+    together."""
+    text = open(os.path.join(prm_dir, "scale",
+                             "receding_layer_1M.prm")).read()
+    bricks = {"quick": [40, 80], "default": [40, 80, 120, 160],
+              "full": [40, 80, 120, 160, 200]}
+    for n in chosen or bricks[sizes]:
+        h = max(2, int(round(8 * n / 200.)))
+        body = re.sub(r"set Subdivisions\s*=.*",
+                      "set Subdivisions          = %d, %d, %d" % (n, h, n),
+                      text)
+        yield "layer %dx%dx%d" % (n, h, n), body
 
 
 def sphere_cases(prm_dir, sizes, chosen=None):
@@ -206,6 +230,9 @@ def main():
     ap.add_argument("--level", action="append", type=int, default=[],
                     help="run the sphere scale family at this level only "
                     "(repeatable)")
+    ap.add_argument("--bricks", action="append", type=int, default=[],
+                    help="run the layer at n x h x n bricks for this n only "
+                    "(repeatable)")
     ap.add_argument("--contact-iterations", type=int, default=0,
                     help="end the contact solve after this many outer "
                     "iterations (0: solve to convergence)")
@@ -213,7 +240,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     dpana = os.path.abspath(args.dpana)
     generators = {"receding": receding_cases, "hertz_sphere": sphere_cases,
-                  "sphere_scale": sphere_scale_cases}
+                  "sphere_scale": sphere_scale_cases, "layer": layer_cases}
     rows = []
     for scene in args.scenes.split(","):
         if scene not in generators:
@@ -221,6 +248,8 @@ def main():
         chosen = [tuple(int(v) for v in x.split(",")) for x in args.size]
         if scene == "sphere_scale":
             chosen = args.level
+        if scene == "layer":
+            chosen = args.bricks
         for label, text in generators[scene](args.prm_dir, args.sizes,
                                              chosen):
             if args.contact_iterations > 0:

@@ -148,14 +148,24 @@ namespace dpana
     dealii::FullMatrix<double>                   cell_matrix(n, n);
     dealii::Vector<double>                       cell_rhs(n);
     std::vector<dealii::types::global_dof_index> local(n);
+    // The resultant of the loads is summed on the way, before the
+    // constraints move any of them onto supports: it is what the user
+    // applied, in every run (the reactions of an elastic run, the contact
+    // tractions of a contact run balance it).
+    applied_resultant = 0;
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
         assemble_cell(cell, values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         constraints_.distribute_local_to_global(
           cell_matrix, cell_rhs, local, matrix, rhs);
+        for (unsigned int i = 0; i < n; ++i)
+          applied_resultant[fe_.system_to_component_index(i).first] +=
+            cell_rhs[i];
       }
     add_concentrated_forces();
+    for (const auto &force : concentrated)
+      applied_resultant += force.force;
   }
 
 

@@ -77,6 +77,20 @@ namespace dpana
         "corner) is moved to relative distance t^p; p = 1 is a uniform grid, "
         "p > 1 makes the cells next to the plane smaller (the first of n "
         "layers by the factor n^(p-1)) and those far from it larger.");
+      prm.declare_entry(
+        "Load patch centre",
+        repeat("0", dim),
+        List(Double(), dim, dim),
+        "Centre (mm) of the load patch on the top; its y coordinate is not "
+        "read. E.g. the lower corner of a quarter model whose symmetry planes "
+        "pass through it.");
+      prm.declare_entry(
+        "Load patch half width",
+        "0",
+        Double(0.),
+        "Half width w (mm) of the boundary `load patch`: the faces of the top "
+        "whose centres lie within w of the Load patch centre in x (and z). "
+        "0: no load patch, the whole top is `top`.");
     }
 
 
@@ -101,6 +115,9 @@ namespace dpana
         parameters::parse_doubles(prm.get("Grading exponents"),
                                   dim,
                                   path + " / Grading exponents");
+      patch_centre     = parse_point<dim>(prm.get("Load patch centre"),
+                                      path + " / Load patch centre");
+      patch_half_width = prm.get_double("Load patch half width");
       for (unsigned int d = 0; d < dim; ++d)
         {
           if (!(upper_corner[d] > lower_corner[d]))
@@ -114,6 +131,13 @@ namespace dpana
                                     "corner and Upper corner in every graded "
                                     "direction");
         }
+      if (patch_half_width > 0.)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != 1 &&
+              (patch_centre[d] + patch_half_width <= lower_corner[d] ||
+               patch_centre[d] - patch_half_width >= upper_corner[d]))
+            throw InputError(path + " / Load patch centre: the patch misses "
+                                    "the top face");
     }
 
 
@@ -131,6 +155,8 @@ namespace dpana
           names["front"] = 4;
           names["back"]  = 5;
         }
+      if (patch_half_width > 0.)
+        names["load patch"] = 6;
       return names;
     }
 
@@ -148,7 +174,11 @@ namespace dpana
           cells += (d == 0 ? "" : " x ") + std::to_string(subdivisions[d]);
         }
       return sizes + ", " + cells + " subdivisions" +
-             (graded() ? ", graded" : "");
+             (graded() ? ", graded" : "") +
+             (patch_half_width > 0. ?
+                ", load patch half width " +
+                  internal::format_number(patch_half_width) :
+                "");
     }
 
 
@@ -225,7 +255,8 @@ namespace dpana
 
 
     // Boundary ids from the face centres: 2d for the face at the lower
-    // corner in direction d, 2d+1 for the one at the upper corner.
+    // corner in direction d, 2d+1 for the one at the upper corner, 6 for the
+    // faces of the top (2 * 1 + 1 = 3) in the load patch.
     template <int dim>
     void
     Brick<dim>::set_boundary_ids(dealii::Triangulation<dim> &tria) const
@@ -233,7 +264,8 @@ namespace dpana
       double size = 0.;
       for (unsigned int d = 0; d < dim; ++d)
         size = std::max(size, upper_corner[d] - lower_corner[d]);
-      const double tolerance = 1e-10 * size;
+      const double tolerance     = 1e-10 * size;
+      unsigned int n_patch_faces = 0;
       for (const auto &cell : tria.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
@@ -248,11 +280,33 @@ namespace dpana
                   }
                 else if (std::abs(x[d] - upper_corner[d]) < tolerance)
                   {
-                    face->set_boundary_id(2 * d + 1);
+                    const bool patch = d == 1 && in_load_patch(x);
+                    face->set_boundary_id(patch ? 6 : 2 * d + 1);
+                    n_patch_faces += patch;
                     found = true;
                   }
               Assert(found, dealii::ExcInternalError());
             }
+      // A patch narrower than the cells can miss every face centre: its
+      // pressure would then act nowhere.
+      if (patch_half_width > 0. && n_patch_faces == 0)
+        throw InputError(parameter +
+                         " / Load patch half width: no face centre of the "
+                         "top lies within it; widen it or refine the mesh");
+    }
+
+
+
+    template <int dim>
+    bool
+    Brick<dim>::in_load_patch(const dealii::Point<dim> &x) const
+    {
+      if (!(patch_half_width > 0.))
+        return false;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (d != 1 && std::abs(x[d] - patch_centre[d]) > patch_half_width)
+          return false;
+      return true;
     }
 
 

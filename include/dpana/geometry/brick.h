@@ -39,7 +39,11 @@ namespace dpana
      *
      * Boundary names and ids: `left`/`right` (x = min/max, ids 0/1),
      * `bottom`/`top` (y, 2/3), `front`/`back` (z, 4/5), set from the face
-     * centres after the global refinements.
+     * centres after the global refinements. With a Load patch half width
+     * w > 0, the faces of the top whose centres lie within w of the Load
+     * patch centre in every horizontal direction (x, and z in 3D) form the
+     * boundary `load patch` (id 6) instead: a pressure on part of the top,
+     * e.g. a layer pressed onto a foundation over a square.
      */
     template <int dim>
     class Brick : public Shape<dim>
@@ -48,8 +52,8 @@ namespace dpana
       Brick();
 
       /**
-       * Declares Lower corner, Upper corner, Subdivisions, Grading centre and
-       * Grading exponents.
+       * Declares Lower corner, Upper corner, Subdivisions, Grading centre,
+       * Grading exponents, Load patch centre and Load patch half width.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -86,6 +90,8 @@ namespace dpana
       std::vector<unsigned int> subdivisions;
       dealii::Point<dim>        grading_centre;
       std::vector<double>       grading_exponents;
+      dealii::Point<dim>        patch_centre;
+      double                    patch_half_width = 0.;
 
       bool
       graded() const;
@@ -95,6 +101,12 @@ namespace dpana
 
       void
       set_boundary_ids(dealii::Triangulation<dim> &tria) const;
+
+      /**
+       * Whether a face centre on the top lies in the load patch.
+       */
+      bool
+      in_load_patch(const dealii::Point<dim> &x) const;
     };
   } // namespace geometry
 } // namespace dpana
