@@ -150,12 +150,25 @@ namespace dpana
     std::vector<dealii::types::global_dof_index> local(n);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (n_parts_ > 1 && cell->subdomain_id() != this_part_)
+          continue;
         assemble_cell(cell, values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         constraints_.distribute_local_to_global(
           cell_matrix, cell_rhs, local, matrix, rhs);
       }
-    add_concentrated_forces();
+    // A partitioned body: each rank has assembled its own cells; the
+    // concentrated forces are added once (by rank 0), and the shares of f
+    // summed, so that every rank holds the whole f. K stays in shares.
+    if (n_parts_ == 1 || this_part_ == 0)
+      add_concentrated_forces();
+    if (n_parts_ > 1)
+      MPI_Allreduce(MPI_IN_PLACE,
+                    rhs.begin(),
+                    rhs.size(),
+                    MPI_DOUBLE,
+                    MPI_SUM,
+                    communicator_);
   }
 
 
