@@ -203,8 +203,9 @@ namespace dpana
     make_constraints();
 
     // A partitioned body keeps the couplings of its own cells only: the
-    // sparsity pattern has a row for every dof (the row starts, 8 bytes a
-    // dof) but the entries of this rank's share of K alone.
+    // sparsity pattern has a row for every dof (its start and its diagonal
+    // entry, about 20 bytes a dof with the matrix) but the other entries
+    // of this rank's share of K alone.
     dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
     if (n_parts_ > 1)
       dealii::DoFTools::make_sparsity_pattern(
