@@ -155,6 +155,8 @@ namespace dpana
     applied_resultant = 0;
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (n_parts_ > 1 && cell->subdomain_id() != this_part_)
+          continue;
         assemble_cell(cell, values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         constraints_.distribute_local_to_global(
@@ -163,9 +165,32 @@ namespace dpana
           applied_resultant[fe_.system_to_component_index(i).first] +=
             cell_rhs[i];
       }
-    add_concentrated_forces();
-    for (const auto &force : concentrated)
-      applied_resultant += force.force;
+    // A partitioned body: each rank has assembled its own cells; the
+    // concentrated forces are added once (by rank 0), and the shares of f
+    // and of the load resultant summed, so that every rank holds the whole
+    // f. K stays in shares.
+    if (n_parts_ == 1 || this_part_ == 0)
+      {
+        add_concentrated_forces();
+        for (const auto &force : concentrated)
+          applied_resultant += force.force;
+      }
+    if (n_parts_ > 1)
+      {
+        MPI_Allreduce(MPI_IN_PLACE,
+                      rhs.begin(),
+                      rhs.size(),
+                      MPI_DOUBLE,
+                      MPI_SUM,
+                      communicator_);
+        double resultant[dim];
+        for (unsigned int c = 0; c < dim; ++c)
+          resultant[c] = applied_resultant[c];
+        MPI_Allreduce(
+          MPI_IN_PLACE, resultant, dim, MPI_DOUBLE, MPI_SUM, communicator_);
+        for (unsigned int c = 0; c < dim; ++c)
+          applied_resultant[c] = resultant[c];
+      }
   }
 
 

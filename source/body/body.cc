@@ -11,9 +11,12 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/body/body.h>
 
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_simplex_p.h>
+
+#include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -189,16 +192,29 @@ namespace dpana
     material_.check(name_ + " / Material");
 
     dof_handler_.reinit(tria);
+    if (n_parts_ > 1)
+      partition_cells();
     dof_handler_.distribute_dofs(fe_);
+    serial_index.clear();
+    if (n_parts_ > 1)
+      number_dofs_by_subdomain();
     number_vertex_dofs();
 
     make_constraints();
 
+    // A partitioned body keeps the couplings of its own cells only: the
+    // sparsity pattern has a row for every dof (its start and its diagonal
+    // entry, about 20 bytes a dof with the matrix) but the other entries
+    // of this rank's share of K alone.
     dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
-    dealii::DoFTools::make_sparsity_pattern(dof_handler_,
-                                            dsp,
-                                            constraints_,
-                                            false);
+    if (n_parts_ > 1)
+      dealii::DoFTools::make_sparsity_pattern(
+        dof_handler_, dsp, constraints_, false, this_part_);
+    else
+      dealii::DoFTools::make_sparsity_pattern(dof_handler_,
+                                              dsp,
+                                              constraints_,
+                                              false);
     sparsity_pattern.copy_from(dsp);
     matrix.reinit(sparsity_pattern);
     rhs.reinit(dof_handler_.n_dofs());
@@ -207,6 +223,63 @@ namespace dpana
     rigid_modes = RigidModes<dim>(tria, dofs_of_vertex, dof_handler_.n_dofs());
     free_modes  = rigid_modes.free_modes(constraints_);
     locate_concentrated_forces();
+  }
+
+
+
+  // @sect3{Partition over MPI ranks}
+  //
+  // partition() only records the ranks; setup() partitions, when the mesh
+  // is complete.
+  template <int dim>
+  void
+  Body<dim>::partition(const MPI_Comm communicator)
+  {
+    communicator_ = communicator;
+    n_parts_      = dealii::Utilities::MPI::n_mpi_processes(communicator);
+    this_part_    = dealii::Utilities::MPI::this_mpi_process(communicator);
+  }
+
+
+
+  // The cells split into n_parts_ subdomains of about equal size with few
+  // faces between them (METIS on the graph of cells that share a face).
+  // Rank 0 partitions and sends the subdomain of every active cell to the
+  // others, so that all ranks hold the same partition whatever the
+  // partitioner does with its ties.
+  template <int dim>
+  void
+  Body<dim>::partition_cells()
+  {
+    std::vector<unsigned int> subdomain(tria.n_active_cells());
+    if (this_part_ == 0)
+      {
+        dealii::GridTools::partition_triangulation(n_parts_, tria);
+        for (const auto &cell : tria.active_cell_iterators())
+          subdomain[cell->active_cell_index()] = cell->subdomain_id();
+      }
+    MPI_Bcast(
+      subdomain.data(), subdomain.size(), MPI_UNSIGNED, 0, communicator_);
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_subdomain_id(subdomain[cell->active_cell_index()]);
+  }
+
+
+
+  // The dofs of subdomain 0 first, then those of subdomain 1, ... (a dof
+  // on the boundary between subdomains goes to one of them), keeping their
+  // relative order; serial_index remembers the number each had before.
+  template <int dim>
+  void
+  Body<dim>::number_dofs_by_subdomain()
+  {
+    std::vector<dealii::types::global_dof_index> new_index(
+      dof_handler_.n_dofs());
+    dealii::DoFRenumbering::compute_subdomain_wise(new_index, dof_handler_);
+    serial_index.resize(new_index.size());
+    for (dealii::types::global_dof_index i = 0; i < new_index.size(); ++i)
+      serial_index[new_index[i]] = i;
+    dof_handler_.renumber_dofs(new_index);
   }
 
 

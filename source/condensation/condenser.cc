@@ -137,7 +137,12 @@ namespace dpana
 
       // The supports: among the free degrees of freedom, the m rows of R
       // picked by the column pivoting of a QR factorisation of R_F^T, so that
-      // R restricted to them is as well conditioned as possible.
+      // R restricted to them is as well conditioned as possible. Many rows
+      // tie (every dof of a translation has the same norm), and the pivoting
+      // takes the first of equals: the free dofs are taken in their serial
+      // order (Body::serial_dof_index()), so that a body partitioned over
+      // ranks, numbered subdomain by subdomain, gets the supports of the
+      // serial run, and the same A.
       supports.clear();
       std::vector<unsigned int> free;
       for (unsigned int i = 0; i < n_dofs; ++i)
@@ -145,13 +150,20 @@ namespace dpana
           free.push_back(i);
       if (R.cols() > 0)
         {
-          Eigen::MatrixXd RFt(R.cols(), free.size());
-          for (unsigned int k = 0; k < free.size(); ++k)
-            RFt.col(k) = R.row(free[k]).transpose();
+          std::vector<unsigned int> serial_order = free;
+          std::sort(serial_order.begin(),
+                    serial_order.end(),
+                    [this](const unsigned int i, const unsigned int j) {
+                      return body.serial_dof_index(i) <
+                             body.serial_dof_index(j);
+                    });
+          Eigen::MatrixXd RFt(R.cols(), serial_order.size());
+          for (unsigned int k = 0; k < serial_order.size(); ++k)
+            RFt.col(k) = R.row(serial_order[k]).transpose();
           Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(RFt);
           AssertThrow(qr.rank() == R.cols(), dealii::ExcInternalError());
           for (unsigned int k = 0; k < R.cols(); ++k)
-            supports.push_back(free[qr.colsPermutation().indices()(k)]);
+            supports.push_back(serial_order[qr.colsPermutation().indices()(k)]);
         }
 
       // The body's constraints plus u_s = 0 at the supports.
@@ -260,6 +272,8 @@ namespace dpana
                               parallel::n_world_ranks());
       auto mumps =
         std::make_unique<linear_algebra::MumpsSchurFactorization>(communicator);
+      // A body partitioned over the ranks holds its share of K on each.
+      mumps->set_matrix_in_shares(mpi && body.n_parts() > 1);
       mumps->set_analysis_check(
         [this, communicator](
           const linear_algebra::MumpsSchurFactorization::Statistics &s) {

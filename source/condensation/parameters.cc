@@ -67,6 +67,17 @@ namespace dpana
                         "MUMPS over all ranks (mpirun -np P dpana FILE.prm), "
                         "the contact problem solved on rank 0; 'auto' mpi "
                         "on more than one rank, serial on one.");
+      prm.declare_entry(
+        "Parallel assembly",
+        "distributed",
+        dealii::Patterns::Selection("replicated|distributed"),
+        "How the MPI route on more than one rank assembles each body "
+        "(doc/parallel.md): 'distributed' the cells partitioned over the "
+        "ranks by METIS, each rank assembling its own cells into the "
+        "distributed matrix that MUMPS factors (no rank holds the whole "
+        "stiffness matrix; the mesh is still whole on every rank); "
+        "'replicated' every rank assembles the whole body and hands its "
+        "rows to MUMPS. One process ignores it.");
     }
 
 
@@ -94,6 +105,9 @@ namespace dpana
                              "more than one rank); use schur");
           backend = Backend::mumps;
         }
+      distributed_assembly = route == parallel::Route::mpi &&
+                             parallel::n_world_ranks() > 1 &&
+                             prm.get("Parallel assembly") == "distributed";
       if (backend == Backend::mumps)
         parallel::check_mumps_available();
       memory_limit_gb        = prm.get_double("Memory limit (GB)");

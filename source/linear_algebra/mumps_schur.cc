@@ -54,7 +54,8 @@ namespace dpana
 
       MPI_Comm                                communicator;
       std::function<void(const Statistics &)> analysis_check;
-      int                                     rank = 0;
+      bool                                    in_shares = false;
+      int                                     rank      = 0;
       parallel::RowRange                      rows;
       Mat                                     K = nullptr;
       Mat                                     F = nullptr;
@@ -82,6 +83,8 @@ namespace dpana
                       const std::vector<unsigned int> &gamma_dofs);
       void
       create_matrix(const dealii::SparseMatrix<double> &K_full);
+      void
+      create_matrix_from_shares(const dealii::SparseMatrix<double> &K_share);
       void
       insert_distributed(const std::vector<PetscInt>    &row_start,
                          const std::vector<PetscInt>    &columns,
@@ -184,6 +187,99 @@ namespace dpana
         check(MatSeqSBAIJSetPreallocationCSR(
                 K, 1, row_start.data(), columns.data(), values.data()),
               "MatSeqSBAIJSetPreallocationCSR");
+      check(MatSetOption(K, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");
+    }
+
+
+
+    // A matrix in shares (the cells of each rank): every rank adds the upper
+    // triangle of all the nonzero rows of its share of K_r, whoever owns
+    // them. The preallocation of a row counts its columns in the diagonal
+    // block (the rows its owner holds) and right of it, summed over the
+    // shares (an entry that two shares hold is counted twice: a little too
+    // much memory reserved on the rows between subdomains), then cut to
+    // the size of each block.
+    void
+    MumpsSchurFactorization::Impl::create_matrix_from_shares(
+      const dealii::SparseMatrix<double> &K_share)
+    {
+      rows              = parallel::RowRange(communicator, free.size());
+      const PetscInt n  = rows.n;
+      const int      nr = rows.counts.size();
+      // The owner of each reduced row: offsets are increasing.
+      const auto owner_end = [this, nr](const PetscInt r) {
+        const auto p =
+          std::upper_bound(rows.offsets.begin(), rows.offsets.end(), r) -
+          rows.offsets.begin() - 1;
+        return p + 1 < nr ? PetscInt(rows.offsets[p + 1]) : rows.n;
+      };
+      std::vector<PetscInt> counts(2 * n, 0);
+      for (PetscInt r = 0; r < n; ++r)
+        {
+          const unsigned int i   = free[r];
+          const PetscInt     end = owner_end(r);
+          for (auto it = K_share.begin(i); it != K_share.end(i); ++it)
+            {
+              const int c = reduced_index[it->column()];
+              if (c >= r && it->value() != 0.0)
+                ++counts[2 * r + (c < end ? 0 : 1)];
+            }
+        }
+      MPI_Allreduce(MPI_IN_PLACE,
+                    counts.data(),
+                    counts.size(),
+                    MPIU_INT,
+                    MPI_SUM,
+                    communicator);
+      const PetscInt        n_local = rows.n_local();
+      std::vector<PetscInt> diagonal(n_local), off_diagonal(n_local);
+      for (PetscInt k = 0; k < n_local; ++k)
+        {
+          const PetscInt r = rows.begin + k;
+          diagonal[k]      = std::min(counts[2 * r], rows.end - r);
+          off_diagonal[k]  = std::min(counts[2 * r + 1], n - rows.end);
+        }
+      counts.clear();
+      counts.shrink_to_fit();
+
+      check(MatCreate(communicator, &K), "MatCreate");
+      check(MatSetSizes(K, n_local, n_local, n, n), "MatSetSizes");
+      check(MatSetType(K, MATSBAIJ), "MatSetType");
+      if (nr > 1)
+        check(MatMPISBAIJSetPreallocation(
+                K, 1, 0, diagonal.data(), 0, off_diagonal.data()),
+              "MatMPISBAIJSetPreallocation");
+      else
+        check(MatSeqSBAIJSetPreallocation(K, 1, 0, diagonal.data()),
+              "MatSeqSBAIJSetPreallocation");
+      std::vector<PetscInt>    columns;
+      std::vector<PetscScalar> values;
+      for (PetscInt r = 0; r < n; ++r)
+        {
+          const unsigned int i = free[r];
+          columns.clear();
+          values.clear();
+          for (auto it = K_share.begin(i); it != K_share.end(i); ++it)
+            {
+              const int c = reduced_index[it->column()];
+              if (c >= r && it->value() != 0.0)
+                {
+                  columns.push_back(c);
+                  values.push_back(it->value());
+                }
+            }
+          if (!columns.empty())
+            check(MatSetValues(K,
+                               1,
+                               &r,
+                               columns.size(),
+                               columns.data(),
+                               values.data(),
+                               ADD_VALUES),
+                  "MatSetValues");
+        }
+      check(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+      check(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
       check(MatSetOption(K, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");
     }
 
@@ -409,7 +505,10 @@ namespace dpana
                   dealii::ExcMessage(
                     "MumpsSchurFactorization: there is nothing to factor (no "
                     "free degrees of freedom)."));
-      impl->create_matrix(K);
+      if (impl->in_shares)
+        impl->create_matrix_from_shares(K);
+      else
+        impl->create_matrix(K);
       impl->factor_interior();
       impl->factor_schur_complement();
     }
@@ -565,6 +664,14 @@ namespace dpana
       const std::function<void(const Statistics &)> &check)
     {
       impl->analysis_check = check;
+    }
+
+
+
+    void
+    MumpsSchurFactorization::set_matrix_in_shares(const bool in_shares)
+    {
+      impl->in_shares = in_shares;
     }
 
 

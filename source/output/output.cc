@@ -71,10 +71,19 @@ namespace dpana
                     const std::string &record)
     {
       dealii::DataOut<dim> data_out;
-      // Piece p of P holds the active cells of the contiguous index range
-      // [p N / P, (p + 1) N / P): the split changes neither the mesh nor the
-      // numbering of the degrees of freedom, only which cells are written.
-      if (n_pieces > 1)
+      // A body partitioned into as many parts as there are pieces: piece p
+      // holds the cells of subdomain p, those rank p assembled.
+      // Otherwise piece p of P holds the active cells of the contiguous
+      // index range [p N / P, (p + 1) N / P): the split changes neither the
+      // mesh nor the numbering of the degrees of freedom, only which cells
+      // are written.
+      if (n_pieces > 1 && body.n_parts() == n_pieces)
+        data_out.set_cell_selection(
+          [piece](
+            const typename dealii::Triangulation<dim>::cell_iterator &cell) {
+            return cell->is_active() && cell->subdomain_id() == piece;
+          });
+      else if (n_pieces > 1)
         {
           const std::size_t n     = body.triangulation().n_active_cells();
           const std::size_t first = n * piece / n_pieces;

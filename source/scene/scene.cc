@@ -161,6 +161,15 @@ namespace dpana
           const auto phase =
             phase_log.phase("assembly", "assembling " + body->name());
           body->create_mesh();
+          // The distributed assembly of the MPI route: the cells split over
+          // the ranks (a body needs at least one cell per rank).
+          if (with_contact && condensation_parameters.distributed_assembly)
+            {
+              parallel::check_ranks(body->name(),
+                                    body->triangulation().n_active_cells(),
+                                    parallel::n_world_ranks());
+              body->partition(MPI_COMM_WORLD);
+            }
           body->setup();
           if (!with_contact)
             body->check_held();
@@ -168,6 +177,24 @@ namespace dpana
         }
       if (!quiet)
         print_bodies();
+      // On several ranks, the peak memory of every rank so far (the mesh,
+      // K, f): what the distributed assembly saves (doc/parallel.md).
+      if (with_contact && condensation_parameters.route == parallel::Route::mpi)
+        {
+          const auto peaks =
+            dealii::Utilities::MPI::gather(MPI_COMM_WORLD, peak_memory_mb(), 0);
+          if (!quiet && parallel::is_root())
+            {
+              std::cout << "        Peak memory after the assembly ("
+                        << (condensation_parameters.distributed_assembly ?
+                              "distributed" :
+                              "replicated")
+                        << "), per rank (MB):";
+              for (const double m : peaks)
+                std::cout << " " << m;
+              std::cout << std::endl;
+            }
+        }
     }
 
 

@@ -71,10 +71,15 @@ namespace
     write(directory + "/r.txt", r.data(), r.size());
     for (unsigned int b = 0; b < scene.n_bodies(); ++b)
       {
-        const auto &u = scene.displacement(b);
+        // In the serial numbering of the dofs, which a body partitioned
+        // over the ranks has renumbered by subdomains.
+        const auto         &u = scene.displacement(b);
+        std::vector<double> serial(u.size());
+        for (unsigned int i = 0; i < u.size(); ++i)
+          serial[scene.body(b).serial_dof_index(i)] = u[i];
         write(directory + "/u_" + std::to_string(b + 1) + ".txt",
-              u.begin(),
-              u.size());
+              serial.data(),
+              serial.size());
       }
   }
 

@@ -11,6 +11,7 @@
 #include <dpana/geometry/geometry.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -194,6 +195,49 @@ namespace dpana
     name() const
     {
       return name_;
+    }
+
+    /**
+     * Splits the body over the ranks of @p communicator for a distributed
+     * assembly (doc/parallel.md), before setup(). setup() then partitions
+     * the cells (METIS, through GridTools::partition_triangulation, on rank
+     * 0, the subdomain of each cell sent to the others) and numbers the
+     * degrees of freedom subdomain by subdomain, so that the dofs of each
+     * rank are contiguous; assemble() assembles the cells of this rank
+     * only. system_matrix() is then this rank's share of K (the sum of the
+     * shares over the ranks is K), system_rhs() the whole f (summed over
+     * the ranks). The mesh itself stays whole on every rank. With one rank
+     * nothing changes.
+     */
+    void
+    partition(const MPI_Comm communicator);
+
+    /**
+     * The number of parts of partition() (1 if it was not called) and the
+     * part of this rank, which is the subdomain id of its cells.
+     */
+    unsigned int
+    n_parts() const
+    {
+      return n_parts_;
+    }
+    unsigned int
+    this_part() const
+    {
+      return this_part_;
+    }
+
+    /**
+     * The number degree of freedom @p i has in the numbering of
+     * DoFHandler::distribute_dofs() (that of one process), which the
+     * numbering by subdomains of a partitioned body changes: results and
+     * choices that depend on the order of the dofs are made in this order,
+     * so that they do not depend on the number of ranks.
+     */
+    dealii::types::global_dof_index
+    serial_dof_index(const dealii::types::global_dof_index i) const
+    {
+      return serial_index.empty() ? i : serial_index[i];
     }
 
     /**
@@ -462,6 +506,18 @@ namespace dpana
     dealii::Tensor<1, dim>                    applied_resultant;
 
     // --- Set-up (body.cc) ---------------------------------------------------
+
+    // The partition of partition(): the ranks, the number of parts and this
+    // rank's part; for a partitioned body, the serial number of each dof.
+    MPI_Comm                                     communicator_ = MPI_COMM_SELF;
+    unsigned int                                 n_parts_      = 1;
+    unsigned int                                 this_part_    = 0;
+    std::vector<dealii::types::global_dof_index> serial_index;
+
+    void
+    partition_cells();
+    void
+    number_dofs_by_subdomain();
 
     dealii::types::boundary_id
     resolve(const std::string &boundary, const std::string &parameter) const;

@@ -53,6 +53,7 @@ namespace dpana
      *       set Schur ordering         = interior nested dissection
      *       set Memory limit (GB)      = 0
      *       set Parallel route         = auto
+     *       set Parallel assembly      = distributed
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -84,6 +85,14 @@ namespace dpana
        * with MUMPS whatever the back end says, and needs Method::schur.
        */
       parallel::Route route = parallel::Route::serial;
+      /**
+       * Whether each body is partitioned over the ranks and assembled in
+       * shares (Body::partition(), setting `Parallel assembly =
+       * distributed`, doc/parallel.md): only on the MPI route with more
+       * than one rank; otherwise every rank assembles the whole K
+       * (`replicated`).
+       */
+      bool distributed_assembly = false;
 
       /**
        * Declare the entries Condensation method, Factorisation back end,

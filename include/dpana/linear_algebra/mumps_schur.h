@@ -79,6 +79,16 @@ namespace dpana
      * The interior solves are distributed (MatSolve on distributed vectors,
      * ICNTL(26) = 0); their results are gathered on every rank, so solve()
      * and solve_condensed() return the full vector everywhere.
+     *
+     * <h3>A matrix assembled in shares</h3>
+     *
+     * After set_matrix_in_shares(true), the matrix each rank gives
+     * factorize() is its share of $K$ (the cells it assembled, see
+     * Body::partition()); $K$ is their sum. Every rank then adds all the
+     * entries of its share to the distributed matrix (ADD_VALUES; PETSc
+     * sends the rows another rank owns to it), so that no rank needs the
+     * whole $K$. The constraints and the dofs of $\Gamma$ are still the
+     * same on every rank.
      */
     class MumpsSchurFactorization : public SchurFactorization
     {
@@ -185,6 +195,14 @@ namespace dpana
        */
       void
       set_analysis_check(const std::function<void(const Statistics &)> &check);
+
+      /**
+       * Whether the matrices given to factorize() are shares of $K$ over
+       * the ranks (see the class documentation); false by default. On one
+       * rank a share is the whole matrix.
+       */
+      void
+      set_matrix_in_shares(const bool in_shares);
 
     private:
       /**

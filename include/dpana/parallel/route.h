@@ -22,14 +22,14 @@ namespace dpana
      *   of `Contact / Factorisation back end` (CHOLMOD or MUMPS on
      *   MPI_COMM_SELF). The fast path of a single machine.
      * - <b>mpi</b>: `mpirun -np P dpana scene.prm`. Every rank reads the
-     *   scene, builds the mesh and assembles the stiffness matrix of every
-     *   body; the factorisation of each body is MUMPS' over MPI_COMM_WORLD
-     *   (linear_algebra::MumpsSchurFactorization), each rank holding the
-     *   rows of the reduced matrix it owns and its part of the factor; the
-     *   Schur complement on Γc and its dense Cholesky factor are formed on
-     *   rank 0 and broadcast; the contact problem is solved on rank 0 and
-     *   its result broadcast (broadcast()); the recovery solves are
-     *   distributed. Rank 0 alone prints the log and writes the output.
+     *   scene and builds every body's mesh, and assembles its own cells
+     *   (`Parallel assembly = distributed`) or all of them (`replicated`);
+     *   each body is factored by MUMPS over MPI_COMM_WORLD (linear_algebra::
+     *   MumpsSchurFactorization), each rank holding the rows of the reduced
+     *   matrix it owns and its part of the factor; the Schur complement on
+     *   Γc and its factor are formed on rank 0, which solves the contact
+     *   problem and broadcasts its result (broadcast()); the recovery solves
+     *   are distributed. Rank 0 alone prints the log and writes the output.
      *
      * In a parameter file, `subsection Contact / set Parallel route =
      * auto|serial|mpi`; `auto` is `mpi` when the run has more than one
