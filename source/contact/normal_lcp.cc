@@ -143,6 +143,7 @@ namespace dpana
       for (Eigen::Index c = 0; c < k; ++c)
         for (Eigen::Index a = 0; a < k; ++a)
           Mcc(a, c) = M(index[a], index[c]);
+      direct_flops += static_cast<double>(k) * k * k / 3.0;
       if (!llt.compute(Mcc))
         return false;
       if (G.rows() > 0)
@@ -351,11 +352,17 @@ namespace dpana
                                     Eigen::VectorXd                 &N,
                                     Eigen::VectorXd                 &alpha)
     {
-      const Eigen::Index k = static_cast<Eigen::Index>(index.size());
-      const Eigen::Index n = M.rows();
+      const Eigen::Index k  = static_cast<Eigen::Index>(index.size());
+      const Eigen::Index n  = M.rows();
+      const double       n3 = static_cast<double>(n) * n * n;
       if (k > 0 && n >= options.complement_size && n - k < k &&
+          (inverse_state != 0 ||
+           direct_flops >= options.complement_after * n3) &&
           ensure_inverse())
-        return solve_by_complement(index, b, e, N, alpha);
+        {
+          ++n_complement_solves;
+          return solve_by_complement(index, b, e, N, alpha);
+        }
       N.setZero();
       if (k == 0)
         return true;

@@ -63,6 +63,12 @@ namespace dpana
       // H_FF on the separated set F = complement of C, |F| rows instead of
       // the |C| of M_CC; the solution is the same to round-off.
       unsigned int complement_size = 0;
+      // ... once the factorisations of M_CC have cost complement_after
+      // times the n^3 flops of forming H (so that a solve that needs few
+      // steps, a frictionless one, never pays for H, and one that needs many
+      // pays at most twice what the better choice made in advance would
+      // have cost); 0: at the first step that qualifies.
+      double complement_after = 1.0;
     };
 
     struct InnerResult
@@ -101,6 +107,14 @@ namespace dpana
       set_tolerance(const double tolerance)
       {
         options.tolerance = tolerance;
+      }
+
+      // How many reduced problems were solved through the separated set
+      // (InnerOptions::complement_size), over all solves of this object.
+      unsigned int
+      complement_solves() const
+      {
+        return n_complement_solves;
       }
 
     private:
@@ -179,10 +193,13 @@ namespace dpana
 
       // The same through the separated set: H = M^{-1}, P = H G^T and
       // G P, formed once (inverse_state: 0 not yet, 1 formed, -1 M not
-      // positive definite); the factor of H_FF of the last separated set F,
-      // Y_F = H_FF^{-1} P_F and the Schur complement P_F^T Y_F - G P of the
-      // equality rows.
-      int                       inverse_state = 0;
+      // positive definite) when the factorisations of M_CC have cost
+      // direct_flops >= complement_after n^3; the factor of H_FF of the last
+      // separated set F, Y_F = H_FF^{-1} P_F and the Schur complement P_F^T Y_F
+      // - G P of the equality rows.
+      int                       inverse_state       = 0;
+      double                    direct_flops        = 0;
+      unsigned int              n_complement_solves = 0;
       Eigen::MatrixXd           H, P, GP;
       std::vector<Eigen::Index> factored_free;
       bool                      free_valid = false;

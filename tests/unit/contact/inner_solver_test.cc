@@ -235,8 +235,9 @@ TEST(InnerSolvers, NormalActiveSetThroughSeparatedSetAgreesWithDirect)
         Eigen::VectorXd e = Eigen::VectorXd::Constant(rows, -3.0 * n);
 
         InnerOptions direct_options, complement_options;
-        direct_options.complement_size     = n + 1;
-        complement_options.complement_size = 0;
+        direct_options.complement_size      = n + 1;
+        complement_options.complement_size  = 0;
+        complement_options.complement_after = 0.0;
         NormalLcp       direct(M, G, direct_options);
         NormalLcp       complement(M, G, complement_options);
         Eigen::VectorXd N_direct     = Eigen::VectorXd::Zero(n);
@@ -259,6 +260,8 @@ TEST(InnerSolvers, NormalActiveSetThroughSeparatedSetAgreesWithDirect)
               in_contact += (N_complement[i] < 0.0);
             // The separated-set form is taken only for |C| > n / 2.
             EXPECT_GT(2 * in_contact, n) << "n " << n << " rows " << rows;
+            EXPECT_GT(complement.complement_solves(), 0u);
+            EXPECT_EQ(direct.complement_solves(), 0u);
             EXPECT_LT(in_contact, n) << "n " << n << " rows " << rows;
             const double scale = N_direct.lpNorm<Eigen::Infinity>();
             EXPECT_LE((N_direct - N_complement).lpNorm<Eigen::Infinity>(),
