@@ -300,19 +300,20 @@ namespace dpana
         residual += b;
         if (G.rows() > 0)
           residual.noalias() += G.transpose() * alpha;
-        double size = 0;
         for (const Eigen::Index j : free)
           residual[j] = 0.0;
-        size = residual.lpNorm<Eigen::Infinity>();
+        double norm = residual.lpNorm<Eigen::Infinity>();
         if (G.rows() > 0)
           {
+            // The equality rows' residual, a traction, made a displacement
+            // like the rows of C by the largest compliance per unit of G.
             e_correction = e - G * N;
-            size         = std::max(size,
+            norm         = std::max(norm,
                             e_correction.lpNorm<Eigen::Infinity>() *
                               M.diagonal().maxCoeff() /
                               std::max(G.lpNorm<Eigen::Infinity>(), 1e-300));
           }
-        return size;
+        return norm;
       };
       double size = kkt_residual();
       for (unsigned int step = 0; step < 3 && size > 0.0; ++step)
