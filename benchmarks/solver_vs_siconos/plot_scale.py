@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Plot of scale_results.csv: the processor time of Siconos' FC3D_NSN_AC and
-of dpana's default solver (before and after the changes of that table)
-against the contact unknowns, one line per problem family, log-log.
+of dpana's default solver (before and after the partition sweeps, and with
+the N-step through the separated set) against the contact unknowns, one
+line per problem family, log-log.
 
     plot_scale.py [scale_results.csv] [scale.png]
 """
@@ -21,14 +22,15 @@ target = sys.argv[2] if len(sys.argv) > 2 else os.path.join(here, "scale.png")
 rows = list(csv.DictReader(open(source)))
 series = [("siconos_nsn_ac", "Siconos FC3D_NSN_AC", "s"),
           ("dpana_before", "dpana default, before", "v"),
-          ("dpana_after", "dpana default, after", "o")]
+          ("dpana_after", "dpana default, after", "o"),
+          ("dpana_separated_set", "dpana default, separated-set N-step", "^")]
 styles = {"scale": "-", "receding_3d_L80": "--"}
 fig, ax = plt.subplots(figsize=(7, 5))
 for family, line in styles.items():
     chosen = [r for r in rows if r["family"] == family]
     for key, label, marker in series:
         points = [(int(r["unknowns"]), float(r[key])) for r in chosen
-                  if r[key] not in ("", "nan")]
+                  if r.get(key, "") not in ("", "nan")]
         if points:
             x, y = zip(*sorted(points))
             ax.loglog(x, y, line, marker=marker,

@@ -11,6 +11,11 @@ extern "C"
   openblas_set_num_threads(int) __attribute__((weak));
   int
   openblas_get_num_threads() __attribute__((weak));
+
+  // LAPACK: the inverse of a symmetric positive definite matrix from the
+  // factor of dpotrf_ (only the triangle uplo of the result is written).
+  void
+  dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 }
 
 namespace dpana
@@ -131,6 +136,29 @@ namespace dpana
       Eigen::MatrixXd X = r;
       solve_in_place(X);
       return X.col(0);
+    }
+
+
+
+    Eigen::MatrixXd
+    DenseCholesky::inverse() const
+    {
+      if (factor.size() == 0)
+        {
+          const Eigen::Index    n = llt.matrixLLT().rows();
+          const Eigen::MatrixXd X = llt.solve(Eigen::MatrixXd::Identity(n, n));
+          return 0.5 * (X + X.transpose()); // symmetric in full
+        }
+      Eigen::MatrixXd      X = factor;
+      const ThreadsForSize threads(X.rows());
+      const int            n    = as_int(X.rows());
+      int                  info = 0;
+      dpotri_("L", &n, X.data(), &n, &info);
+      // dpotri writes the lower triangle; mirror it.
+      for (Eigen::Index c = 1; c < X.cols(); ++c)
+        for (Eigen::Index a = 0; a < c; ++a)
+          X(a, c) = X(c, a);
+      return X;
     }
 
 

@@ -143,6 +143,7 @@ namespace dpana
       for (Eigen::Index c = 0; c < k; ++c)
         for (Eigen::Index a = 0; a < k; ++a)
           Mcc(a, c) = M(index[a], index[c]);
+      direct_flops += static_cast<double>(k) * k * k / 3.0;
       if (!llt.compute(Mcc))
         return false;
       if (G.rows() > 0)
@@ -160,9 +161,191 @@ namespace dpana
 
 
 
+    // @sect4{The reduced problem through the separated set}
+    //
+    // On the 3D surfaces of 10^3 - 10^4 elements most elements are in
+    // contact, and each active-set step factoring M_CC costs |C|^3 / 3 flops
+    // (2500 rows of 3364 at 10 092 contact unknowns). The same reduced
+    // problem has an equivalent form on the separated set F, the complement
+    // of C. With H = M^{-1} and the reaction w = M N + b + G^T alpha, which
+    // vanishes on C, the conditions N_F = 0 and G N = e read
+    // @f[
+    //   N = H (w - b - G^T \alpha), \quad w_C = 0:\qquad
+    //   H_{FF} w_F - P_F \alpha = q_F, \quad
+    //   P_F^T w_F - G P \alpha = e + G q,
+    // @f]
+    // with q = H b and P = H G^T. So w_F = z + Y_F alpha, z = H_FF^{-1} q_F,
+    // Y_F = H_FF^{-1} P_F, and (P_F^T Y_F - G P) alpha = e + G q - P_F^T z
+    // (minus the Schur complement G_C M_CC^{-1} G_C^T of the direct form).
+    // H_FF is a principal block of an SPD matrix, hence SPD; a step factors
+    // it, |F| rows, and forms H once for all steps of all N-steps of a
+    // splitting (M = A_NN does not change). H carries the round-off of the
+    // inversion, cond(M) times the machine epsilon; up to three steps of
+    // iterative refinement on the KKT rows of C, each a solve of the same
+    // form with the residual as data, bring N back to the accuracy of the
+    // direct form.
+    bool
+    NormalLcp::ensure_inverse()
+    {
+      if (inverse_state == 0)
+        {
+          DenseCholesky factor;
+          inverse_state = factor.compute(M) ? 1 : -1;
+          if (inverse_state > 0)
+            {
+              H = factor.inverse();
+              if (G.rows() > 0)
+                {
+                  P  = H * G.transpose();
+                  GP = G * P;
+                }
+            }
+        }
+      return inverse_state > 0;
+    }
+
+
+
+    bool
+    NormalLcp::factor_separated_set(const std::vector<Eigen::Index> &free)
+    {
+      if (free_valid && free == factored_free)
+        return true;
+      const Eigen::Index f = static_cast<Eigen::Index>(free.size());
+      free_valid           = false;
+      if (f > 0)
+        {
+          Eigen::MatrixXd Hff(f, f);
+          for (Eigen::Index c = 0; c < f; ++c)
+            for (Eigen::Index a = 0; a < f; ++a)
+              Hff(a, c) = H(free[a], free[c]);
+          if (!llt_free.compute(std::move(Hff)))
+            return false;
+        }
+      if (G.rows() > 0)
+        {
+          Pf.resize(f, G.rows());
+          for (Eigen::Index a = 0; a < f; ++a)
+            Pf.row(a) = P.row(free[a]);
+          Yf = (f > 0) ? llt_free.solve(Pf) : Pf;
+          schur_free.compute(Pf.transpose() * Yf - GP);
+        }
+      factored_free = free;
+      free_valid    = true;
+      return true;
+    }
+
+
+
+    // One solve of the form above for the data (b, e); N_F is set to zero
+    // exactly (it is zero up to round-off).
+    void
+    NormalLcp::solve_through_separated_set(
+      const std::vector<Eigen::Index> &free,
+      const Eigen::VectorXd           &b,
+      const Eigen::VectorXd           &e,
+      Eigen::VectorXd                 &N,
+      Eigen::VectorXd                 &alpha)
+    {
+      const Eigen::Index    f = static_cast<Eigen::Index>(free.size());
+      const Eigen::VectorXd q = H * b;
+      Eigen::VectorXd       qf(f), wf;
+      for (Eigen::Index a = 0; a < f; ++a)
+        qf[a] = q[free[a]];
+      wf = (f > 0) ? llt_free.solve(qf) : qf;
+      N  = -q;
+      if (G.rows() > 0)
+        {
+          Eigen::VectorXd rs = e + G * q;
+          rs.noalias() -= Pf.transpose() * wf;
+          alpha = schur_free.solve(rs);
+          wf.noalias() += Yf * alpha;
+          N.noalias() -= P * alpha;
+        }
+      for (Eigen::Index a = 0; a < f; ++a)
+        N += wf[a] * H.col(free[a]);
+      for (Eigen::Index a = 0; a < f; ++a)
+        N[free[a]] = 0.0;
+    }
+
+
+
+    bool
+    NormalLcp::solve_by_complement(const std::vector<Eigen::Index> &index,
+                                   const Eigen::VectorXd           &b,
+                                   const Eigen::VectorXd           &e,
+                                   Eigen::VectorXd                 &N,
+                                   Eigen::VectorXd                 &alpha)
+    {
+      const Eigen::Index        n = M.rows();
+      std::vector<Eigen::Index> free;
+      free.reserve(n - index.size());
+      std::vector<char> in_c(n, 0);
+      for (const Eigen::Index j : index)
+        in_c[j] = 1;
+      for (Eigen::Index j = 0; j < n; ++j)
+        if (!in_c[j])
+          free.push_back(j);
+      if (!factor_separated_set(free))
+        return false;
+      solve_through_separated_set(free, b, e, N, alpha);
+
+      // Iterative refinement: the residual of the KKT rows of C (w_C = 0)
+      // and of the equality rows, as data of a correction of the same form
+      // (only b_C enters the solution, so b' is the residual on C and zero
+      // on F), while it falls by at least a half.
+      Eigen::VectorXd residual(n), b_correction(n), e_correction, dN, dalpha;
+      auto            kkt_residual = [&]() {
+        residual.noalias() = M * N;
+        residual += b;
+        if (G.rows() > 0)
+          residual.noalias() += G.transpose() * alpha;
+        for (const Eigen::Index j : free)
+          residual[j] = 0.0;
+        double norm = residual.lpNorm<Eigen::Infinity>();
+        if (G.rows() > 0)
+          {
+            // The equality rows' residual, a traction, made a displacement
+            // like the rows of C by the largest compliance per unit of G.
+            e_correction = e - G * N;
+            norm         = std::max(norm,
+                            e_correction.lpNorm<Eigen::Infinity>() *
+                              M.diagonal().maxCoeff() /
+                              std::max(G.lpNorm<Eigen::Infinity>(), 1e-300));
+          }
+        return norm;
+      };
+      double size = kkt_residual();
+      for (unsigned int step = 0; step < 3 && size > 0.0; ++step)
+        {
+          b_correction = residual;
+          solve_through_separated_set(
+            free, b_correction, e_correction, dN, dalpha);
+          const Eigen::VectorXd N_old = N, alpha_old = alpha;
+          N += dN;
+          if (G.rows() > 0)
+            alpha += dalpha;
+          const double new_size = kkt_residual();
+          if (!(new_size < size))
+            {
+              N     = N_old;
+              alpha = alpha_old;
+              break;
+            }
+          const bool enough = (new_size > 0.5 * size);
+          size              = new_size;
+          if (enough)
+            break;
+        }
+      return true;
+    }
+
+
+
     // The reduced equality-constrained problem on the contact set C,
     // M_CC N_C + G_C^T alpha = -b_C, G_C N_C = e, N = 0 off C; false if
-    // M_CC is not positive definite.
+    // M_CC is not positive definite. Through the separated set when that is
+    // the smaller one (see above).
     bool
     NormalLcp::solve_on_contact_set(const std::vector<Eigen::Index> &index,
                                     const Eigen::VectorXd           &b,
@@ -170,7 +353,17 @@ namespace dpana
                                     Eigen::VectorXd                 &N,
                                     Eigen::VectorXd                 &alpha)
     {
-      const Eigen::Index k = static_cast<Eigen::Index>(index.size());
+      const Eigen::Index k  = static_cast<Eigen::Index>(index.size());
+      const Eigen::Index n  = M.rows();
+      const double       n3 = static_cast<double>(n) * n * n;
+      if (k > 0 && n >= options.complement_size && n - k < k &&
+          (inverse_state != 0 ||
+           direct_flops >= options.complement_after * n3) &&
+          ensure_inverse())
+        {
+          ++n_complement_solves;
+          return solve_by_complement(index, b, e, N, alpha);
+        }
       N.setZero();
       if (k == 0)
         return true;

@@ -243,6 +243,7 @@ namespace dpana
         inner.augmentation         = options.augmentation;
         inner.partition_sweeps     = options.partition_sweeps;
         inner.partition_sweep_size = options.partition_sweep_size;
+        inner.complement_size      = options.normal_complement_size;
         return inner;
       }
 

@@ -23,7 +23,11 @@
 //     QP on C (N_j = 0 off C, w_j = 0 on C, G N = e) is solved exactly
 //     (Cholesky of M_CC on the system LAPACK, dense_cholesky.h, and a Schur
 //     complement for alpha), and C is updated
-//     until it repeats, which gives the exact solution to round-off. A set
+//     until it repeats, which gives the exact solution to round-off. Where
+//     most elements are in contact, the reduced problem is solved through
+//     the complement F of C instead (see "The reduced problem through the
+//     separated set" in normal_lcp.cc): with H = M^{-1}, formed once per
+//     NormalLcp, a step factors H_FF, |F| rows instead of |C|. A set
 //     that was already visited (cycling, possible for SPD matrices that are
 //     not M-matrices) triggers a few PGS sweeps from the current point before
 //     the active-set steps resume; the number of steps is capped.
@@ -53,6 +57,18 @@ namespace dpana
       unsigned int partition_sweeps = 0;
       // ... in T-steps of at least this many tangential unknowns.
       unsigned int partition_sweep_size = 1000;
+      // Active-set N-step only: with at least this many normal unknowns, a
+      // contact set C with fewer elements outside than inside is solved
+      // through H = M^{-1} (formed once, n^3 flops) and a Cholesky factor of
+      // H_FF on the separated set F = complement of C, |F| rows instead of
+      // the |C| of M_CC; the solution is the same to round-off.
+      unsigned int complement_size = 0;
+      // ... once the factorisations of M_CC have cost complement_after
+      // times the n^3 flops of forming H (so that a solve that needs few
+      // steps, a frictionless one, never pays for H, and one that needs many
+      // pays at most twice what the better choice made in advance would
+      // have cost); 0: at the first step that qualifies.
+      double complement_after = 1.0;
     };
 
     struct InnerResult
@@ -93,6 +109,14 @@ namespace dpana
         options.tolerance = tolerance;
       }
 
+      // How many reduced problems were solved through the separated set
+      // (InnerOptions::complement_size), over all solves of this object.
+      unsigned int
+      complement_solves() const
+      {
+        return n_complement_solves;
+      }
+
     private:
       // PGS sweeps on (matrix, rhs) until the relative change is below the
       // tolerance or max_sweeps; returns the number of sweeps (negative if
@@ -118,6 +142,30 @@ namespace dpana
       bool
       factor_contact_set(const std::vector<Eigen::Index> &index);
 
+      // The reduced problem on C solved through H = M^{-1} and the
+      // separated set F (false if M is not positive definite): H formed
+      // once, the factors of H_FF kept while F repeats, then the solve and
+      // up to three steps of iterative refinement on the KKT rows of C.
+      bool
+      ensure_inverse();
+
+      bool
+      factor_separated_set(const std::vector<Eigen::Index> &free);
+
+      void
+      solve_through_separated_set(const std::vector<Eigen::Index> &free,
+                                  const Eigen::VectorXd           &b,
+                                  const Eigen::VectorXd           &e,
+                                  Eigen::VectorXd                 &N,
+                                  Eigen::VectorXd                 &alpha);
+
+      bool
+      solve_by_complement(const std::vector<Eigen::Index> &index,
+                          const Eigen::VectorXd           &b,
+                          const Eigen::VectorXd           &e,
+                          Eigen::VectorXd                 &N,
+                          Eigen::VectorXd                 &alpha);
+
       bool
       solve_on_contact_set(const std::vector<Eigen::Index> &index,
                            const Eigen::VectorXd           &b,
@@ -142,6 +190,22 @@ namespace dpana
       Eigen::MatrixXd           Mcc, Gc, Y;
       DenseCholesky             llt;
       Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> schur;
+
+      // The same through the separated set: H = M^{-1}, P = H G^T and
+      // G P, formed once (inverse_state: 0 not yet, 1 formed, -1 M not
+      // positive definite) when the factorisations of M_CC have cost
+      // direct_flops >= complement_after n^3; the factor of H_FF of the last
+      // separated set F, Y_F = H_FF^{-1} P_F and the Schur complement P_F^T Y_F
+      // - G P of the equality rows.
+      int                       inverse_state       = 0;
+      double                    direct_flops        = 0;
+      unsigned int              n_complement_solves = 0;
+      Eigen::MatrixXd           H, P, GP;
+      std::vector<Eigen::Index> factored_free;
+      bool                      free_valid = false;
+      Eigen::MatrixXd           Pf, Yf;
+      DenseCholesky             llt_free;
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> schur_free;
     };
   } // namespace contact
 } // namespace dpana

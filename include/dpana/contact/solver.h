@@ -97,6 +97,11 @@ namespace dpana
       // faster at 1152 and more.
       unsigned int partition_sweeps     = 200;
       unsigned int partition_sweep_size = 1000;
+      // Splitting with active-set inner solvers only: N-steps of at least
+      // this many normal unknowns solve a contact set that holds more than
+      // half of the elements through the inverse of A_NN and the separated
+      // set (normal_lcp.h): a step then factors |F| rows instead of |C|.
+      unsigned int normal_complement_size = 0;
       // Splitting only (the robust mode of the default solver): when the
       // splitting stops without converging (stall, cycling, stagnation,
       // iteration cap), solve again by Alart-Curnier from the splitting's

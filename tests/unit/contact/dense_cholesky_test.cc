@@ -1,7 +1,7 @@
 // The dense Cholesky factorisation of the active-set solvers
 // (dense_cholesky.h) against Eigen's LLT, an independent implementation, on
-// both sides of the size where it switches from Eigen to LAPACK; and its
-// refusal of a matrix that is not positive definite.
+// both sides of the size where it switches from Eigen to LAPACK; its
+// inverse; and its refusal of a matrix that is not positive definite.
 #include <dpana/contact/dense_cholesky.h>
 
 #include <random>
@@ -53,6 +53,26 @@ TEST(DenseCholesky, AgreesWithEigenLltOnBothPaths)
       EXPECT_LE((L.transpose() * upper - R).norm(), 1e-10 * R.norm()) << size;
       const Eigen::VectorXd x = chol.solve(Eigen::VectorXd(R.col(1)));
       EXPECT_LE((x - X.col(1)).norm(), 1e-14 * x.norm()) << size;
+    }
+}
+
+
+
+// inverse() on both paths: H X = I, and X symmetric in full (dpotri writes
+// one triangle only, the other is mirrored).
+TEST(DenseCholesky, InverseOnBothPaths)
+{
+  for (const Eigen::Index size : {5, 63, 64, 200})
+    {
+      const Eigen::MatrixXd H = random_spd(size, 13 + size);
+      DenseCholesky         chol;
+      ASSERT_TRUE(chol.compute(H)) << size;
+      const Eigen::MatrixXd X = chol.inverse();
+      ASSERT_EQ(X.rows(), size);
+      ASSERT_EQ(X.cols(), size);
+      const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(size, size);
+      EXPECT_LE((H * X - I).norm(), 1e-10 * std::sqrt(double(size))) << size;
+      EXPECT_EQ((X - X.transpose()).norm(), 0.0) << size;
     }
 }
 

@@ -1,8 +1,9 @@
 // The inner solvers of the splitting on their own: the spectral form of the
-// projection derivative used by the Newton step of the friction QP, and the
+// projection derivative used by the Newton step of the friction QP, the
 // agreement of the two independent inner solvers (projected Gauss-Seidel and
 // active set / semismooth Newton) on random subproblems, with and without
-// equality rows.
+// equality rows, and the agreement of the two forms of the normal active-set
+// step (on the contact set, and through the separated set).
 #include <dpana/contact/friction_qp.h>
 #include <dpana/contact/friction_set.h>
 #include <dpana/contact/normal_lcp.h>
@@ -194,6 +195,97 @@ TEST(InnerSolvers, FrictionQpActiveSetAgreesWithPgs)
             EXPECT_NEAR(beta_newton[0],
                         beta_pgs[0],
                         1e-6 * (1.0 + std::abs(beta_newton[0])));
+          }
+      }
+}
+
+
+
+// The normal active-set solver with its reduced problems solved through the
+// separated set (InnerOptions::complement_size = 0) against the same solver
+// solving them on the contact set (complement_size above n): the same
+// active-set iterates, so the same steps and the same solution to
+// round-off, which solves the LCP (N <= 0, w <= 0, N_j w_j = 0, G N = e).
+// Compliance-like matrices (the inverse of a 1D stiffness, positive and
+// slowly decaying, plus a random SPD part) and loads pressing most elements
+// into contact, so that the contact set is the larger one and the
+// separated-set form is taken; with and without an equality row (a body
+// held by its contacts: the normal resultant prescribed), cold and warm
+// started.
+TEST(InnerSolvers, NormalActiveSetThroughSeparatedSetAgreesWithDirect)
+{
+  for (const unsigned int n : {40u, 150u})
+    for (const unsigned int rows : {0u, 1u})
+      {
+        Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            K(i, i) = 2.2;
+            if (i + 1 < n)
+              K(i, i + 1) = K(i + 1, i) = -1.0;
+          }
+        const Eigen::MatrixXd M =
+          Eigen::MatrixXd(K.inverse()) + 0.01 * random_spd(n, 29 + n + rows);
+        std::mt19937                     gen(17 + rows);
+        std::normal_distribution<double> normal(0.0, 1.0);
+        Eigen::VectorXd                  b(n);
+        for (unsigned int i = 0; i < n; ++i)
+          b[i] = 6.0 + normal(gen);
+        Eigen::MatrixXd G = Eigen::MatrixXd::Ones(rows, n);
+        Eigen::VectorXd e = Eigen::VectorXd::Constant(rows, -3.0 * n);
+
+        InnerOptions direct_options, complement_options;
+        direct_options.complement_size      = n + 1;
+        complement_options.complement_size  = 0;
+        complement_options.complement_after = 0.0;
+        NormalLcp       direct(M, G, direct_options);
+        NormalLcp       complement(M, G, complement_options);
+        Eigen::VectorXd N_direct     = Eigen::VectorXd::Zero(n);
+        Eigen::VectorXd N_complement = N_direct, alpha_direct, alpha_complement;
+        for (const unsigned int solve : {0u, 1u})
+          {
+            if (solve == 1)
+              // Warm start on changed data, as in a splitting.
+              for (unsigned int i = 0; i < n; ++i)
+                b[i] += 0.5 * normal(gen);
+            const InnerResult r_direct =
+              direct.solve_active_set(b, e, N_direct, alpha_direct);
+            const InnerResult r_complement =
+              complement.solve_active_set(b, e, N_complement, alpha_complement);
+            ASSERT_TRUE(r_direct.converged) << r_direct.message;
+            ASSERT_TRUE(r_complement.converged) << r_complement.message;
+            EXPECT_EQ(r_direct.iterations, r_complement.iterations);
+            unsigned int in_contact = 0;
+            for (unsigned int i = 0; i < n; ++i)
+              in_contact += (N_complement[i] < 0.0);
+            // The separated-set form is taken only for |C| > n / 2.
+            EXPECT_GT(2 * in_contact, n) << "n " << n << " rows " << rows;
+            EXPECT_GT(complement.complement_solves(), 0u);
+            EXPECT_EQ(direct.complement_solves(), 0u);
+            EXPECT_LT(in_contact, n) << "n " << n << " rows " << rows;
+            const double scale = N_direct.lpNorm<Eigen::Infinity>();
+            EXPECT_LE((N_direct - N_complement).lpNorm<Eigen::Infinity>(),
+                      1e-12 * scale)
+              << "n " << n << " rows " << rows << " solve " << solve;
+            Eigen::VectorXd w = M * N_complement + b;
+            if (rows > 0)
+              {
+                w += G.transpose() * alpha_complement;
+                EXPECT_NEAR(alpha_complement[0],
+                            alpha_direct[0],
+                            1e-12 * std::abs(alpha_direct[0]));
+                EXPECT_LE(std::abs((G * N_complement - e)[0]),
+                          1e-12 * std::abs(e[0]));
+              }
+            const double w_scale = b.lpNorm<Eigen::Infinity>();
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                EXPECT_LE(N_complement[i], 0.0);
+                EXPECT_LE(w[i], 1e-12 * w_scale) << i;
+                EXPECT_LE(std::abs(N_complement[i] * w[i]),
+                          1e-12 * scale * w_scale)
+                  << i;
+              }
           }
       }
 }
