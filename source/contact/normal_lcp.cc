@@ -139,19 +139,14 @@ namespace dpana
         return true;
       const Eigen::Index k = static_cast<Eigen::Index>(index.size());
       factor_valid         = false;
-      Mcc.resize(k, k);
-      for (Eigen::Index c = 0; c < k; ++c)
-        for (Eigen::Index a = 0; a < k; ++a)
-          Mcc(a, c) = M(index[a], index[c]);
+      Mcc                  = M(index, index);
       direct_flops += static_cast<double>(k) * k * k / 3.0;
       if (!llt.compute(Mcc))
         return false;
       if (G.rows() > 0)
         {
-          Gc.resize(G.rows(), k);
-          for (Eigen::Index a = 0; a < k; ++a)
-            Gc.col(a) = G.col(index[a]);
-          Y = llt.solve(Eigen::MatrixXd(Gc.transpose())); // M_CC^{-1} G_C^T
+          Gc = G(Eigen::all, index);
+          Y  = llt.solve(Eigen::MatrixXd(Gc.transpose())); // M_CC^{-1} G_C^T
           schur.compute(Gc * Y);
         }
       factored_index = index;
@@ -215,18 +210,13 @@ namespace dpana
       free_valid           = false;
       if (f > 0)
         {
-          Eigen::MatrixXd Hff(f, f);
-          for (Eigen::Index c = 0; c < f; ++c)
-            for (Eigen::Index a = 0; a < f; ++a)
-              Hff(a, c) = H(free[a], free[c]);
+          Eigen::MatrixXd Hff = H(free, free);
           if (!llt_free.compute(std::move(Hff)))
             return false;
         }
       if (G.rows() > 0)
         {
-          Pf.resize(f, G.rows());
-          for (Eigen::Index a = 0; a < f; ++a)
-            Pf.row(a) = P.row(free[a]);
+          Pf = P(free, Eigen::all);
           Yf = (f > 0) ? llt_free.solve(Pf) : Pf;
           schur_free.compute(Pf.transpose() * Yf - GP);
         }
@@ -247,13 +237,11 @@ namespace dpana
       Eigen::VectorXd                 &N,
       Eigen::VectorXd                 &alpha)
     {
-      const Eigen::Index    f = static_cast<Eigen::Index>(free.size());
-      const Eigen::VectorXd q = H * b;
-      Eigen::VectorXd       qf(f), wf;
-      for (Eigen::Index a = 0; a < f; ++a)
-        qf[a] = q[free[a]];
-      wf = (f > 0) ? llt_free.solve(qf) : qf;
-      N  = -q;
+      const Eigen::Index    f  = static_cast<Eigen::Index>(free.size());
+      const Eigen::VectorXd q  = H * b;
+      const Eigen::VectorXd qf = q(free);
+      Eigen::VectorXd       wf = (f > 0) ? llt_free.solve(qf) : qf;
+      N                        = -q;
       if (G.rows() > 0)
         {
           Eigen::VectorXd rs = e + G * q;
