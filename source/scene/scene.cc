@@ -199,34 +199,7 @@ namespace dpana
 
 
 
-    template <int dim>
-    void
-    Scene<dim>::print_bodies() const
-    {
-      for (const auto &body : bodies)
-        {
-          std::cout << "        " << body->name() << ": "
-                    << body->geometry_description() << "; "
-                    << body->dof_handler().n_dofs() << " dofs, "
-                    << body->constraints().n_constraints() << " constrained; "
-                    << body->material().description(dim);
-          if (!body->free_rigid_modes().empty())
-            {
-              std::cout << "; free rigid motions:";
-              for (const auto &m : body->free_rigid_modes())
-                std::cout << " " << m.description;
-            }
-          std::cout << std::endl;
-          for (const auto &w : body->warnings())
-            std::cout << "        warning: " << w << std::endl;
-          for (const auto &cf : body->applied_concentrated_forces())
-            std::cout << "        " << body->name() << ": concentrated force ("
-                      << cf.force << ") requested at (" << cf.requested_point
-                      << ") applied at vertex (" << cf.vertex << "), "
-                      << cf.vertex.distance(cf.requested_point) << " mm away"
-                      << std::endl;
-        }
-    }
+    // print_bodies() and print_body_results(): scene_log.cc.
 
 
 
@@ -585,23 +558,6 @@ namespace dpana
                   << std::endl;
     }
 
-
-
-    template <int dim>
-    void
-    Scene<dim>::print_body_results() const
-    {
-      for (const auto &body : bodies)
-        {
-          std::cout << "        " << body->name()
-                    << ": max |u| = " << body->max_displacement()
-                    << " mm; load resultant (" << body->applied_load_resultant()
-                    << ")";
-          for (const auto &[name, R] : body->reactions())
-            std::cout << "; reaction " << name << " (" << R << ")";
-          std::cout << std::endl;
-        }
-    }
 
 
     template class Scene<2>;
