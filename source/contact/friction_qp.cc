@@ -325,7 +325,9 @@ namespace dpana
     // part of dx already set, then dx completed; returns a failure message,
     // empty on success.
     std::string
-    FrictionQp::newton_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx)
+    FrictionQp::newton_step(const Eigen::VectorXd &F,
+                            Eigen::VectorXd       &dx,
+                            const bool             refactor)
     {
       const Eigen::Index q  = M.rows();
       const Eigen::Index me = G.rows();
@@ -342,8 +344,14 @@ namespace dpana
         }
       if (f > 0)
         {
-          if (!factor_newton_matrix())
-            return "friction active set: Newton matrix not positive definite";
+          if (refactor)
+            {
+              factored_directions = -1;
+              if (!factor_newton_matrix())
+                return "friction active set: Newton matrix not positive "
+                       "definite";
+              factored_directions = f;
+            }
           x = solve_newton_matrix(g);
         }
       else
@@ -359,6 +367,16 @@ namespace dpana
       if (!dx.allFinite())
         return "friction active set: singular Jacobian";
       return "";
+    }
+
+
+
+    bool
+    FrictionQp::factors_fit() const
+    {
+      return factored_directions > 0 && partition == previous_partition &&
+             factored_directions ==
+               static_cast<Eigen::Index>(directions.size());
     }
 
 
@@ -395,186 +413,6 @@ namespace dpana
       if (f > 0)
         x.noalias() -= Y * dbeta;
       return dbeta;
-    }
-
-
-
-    // @sect5{The predictor of a warm started solve}
-    //
-    // In a splitting the T-steps follow one another with data (c, radii)
-    // that change less and less. Started from the last solution, the
-    // natural map of the new data clips the points y_j = T_j - rho_j w_j of
-    // many stick blocks onto their circles, and the partition then takes
-    // several Newton steps, each with a new factorisation, to settle. The
-    // predictor is one Newton step of the new data on the PREVIOUS
-    // partition: the generalised Jacobian of the last Newton step of the
-    // previous solve (its eigen-directions, from the radii and the points y
-    // of that step), and the natural map with the blocks that stuck there
-    // taken as sticking, F_j = T_j - y_j = rho_j w_j (no clipping). If the
-    // partition is unchanged this is the exact step to the solution of the
-    // new problem for the interval and the polygon, and a Newton step on the
-    // slip circles for the disc; its factors are those kept for that
-    // partition (factor_newton_matrix). It is kept only if it passes the
-    // Armijo test on the true natural map; otherwise the solve goes on from
-    // the start point as before. False if there is no previous step or the
-    // step could not be made.
-    bool
-    FrictionQp::predictor_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx)
-    {
-      if (radius_last.size() != static_cast<Eigen::Index>(n))
-        return false;
-      Eigen::VectorXd F_previous = F;
-      for (unsigned int j = 0; j < n; ++j)
-        if (partition[j] == 2)
-          for (unsigned int a = 0; a < m; ++a)
-            F_previous[m * j + a] = rho[j] * w[m * j + a];
-      y.swap(y_last);
-      region.swap(region_last);
-      const Eigen::VectorXd radius = radius_last;
-      newton_directions(radius, F_previous, dx);
-      return newton_step(F_previous, dx).empty();
-    }
-
-
-
-    // @sect5{Sweeps that find the partition}
-    //
-    // Started far from its solution (the first T-steps of a splitting, whose
-    // normal tractions are still changing), the semismooth Newton method
-    // finds the stick / slip partition a few blocks per step: on the 3D
-    // receding block with 3888 contact unknowns the first T-steps took 22 to
-    // 27 Newton steps each, each with a new partition, hence a new Cholesky
-    // factorisation of H (f^3/3 flops), most of them changing fewer than 20
-    // of 1296 blocks. Projected Gauss-Seidel sweeps (solve_pgs, a few q^2
-    // flops each) move the same boundary without any factorisation. They are
-    // made in chunks of five; after each chunk the natural map gives the
-    // regions of the blocks (interior, circle or facet, vertex, zero
-    // radius), and the sweeps stop when two chunks in a row have left all
-    // of them unchanged, which a warm start late in a splitting does at
-    // once. (One unchanged chunk is not enough where Gauss-Seidel converges
-    // slowly: at 10 092 contact unknowns a T-step stopped after 20 sweeps
-    // and its Newton steps then moved the partition for 158 steps, 105 of
-    // them with a new factorisation.) The Newton steps then begin on
-    // (nearly) the right partition.
-    unsigned int
-    FrictionQp::settle_partition(const Eigen::VectorXd &c,
-                                 const Eigen::VectorXd &radius,
-                                 const Eigen::VectorXd &e,
-                                 Eigen::VectorXd       &T,
-                                 Eigen::VectorXd       &beta,
-                                 Eigen::VectorXd       &F)
-    {
-      constexpr unsigned int chunk  = 5;
-      const InnerOptions     saved  = options;
-      std::vector<int>       before = region;
-      unsigned int           sweeps = 0, unchanged = 0;
-      options.max_iterations = chunk;
-      while (sweeps < saved.partition_sweeps && unchanged < 2)
-        {
-          solve_pgs(c, radius, e, T, beta);
-          sweeps += chunk;
-          natural_map(c, radius, e, T, beta, F);
-          unchanged = (region == before) ? unchanged + 1 : 0;
-          before    = region;
-        }
-      options = saved;
-      return sweeps;
-    }
-
-
-
-    InnerResult
-    FrictionQp::solve_active_set(const Eigen::VectorXd &c,
-                                 const Eigen::VectorXd &radius,
-                                 const Eigen::VectorXd &e,
-                                 Eigen::VectorXd       &T,
-                                 Eigen::VectorXd       &beta)
-    {
-      const Eigen::Index q  = T.size();
-      const Eigen::Index me = G.rows();
-      InnerResult        result;
-      if (beta.size() != me)
-        beta = Eigen::VectorXd::Zero(me);
-      project_onto_sets(radius, T);
-
-      Eigen::VectorXd F(q + me), Ftrial(q + me), dx(q + me), Ttrial(q),
-        btrial(me);
-      v.resize(q);
-      unsigned int failures = 0;
-      natural_map(c, radius, e, T, beta, F);
-      // Armijo backtracking on 1/2 ||F||^2 along dx (at most max_steps
-      // halvings); an accepted step moves (T, beta, F). w is that of
-      // (T, beta) on entry (the last natural map was made there).
-      Eigen::VectorXd w0(q), dw(q);
-      const auto      line_search = [&](const unsigned int max_steps) {
-        w0           = w;
-        dw.noalias() = M * dx.head(q);
-        if (me > 0)
-          dw.noalias() += G.transpose() * dx.tail(me);
-        const bool accepted =
-          armijo_backtracking(0.5 * F.squaredNorm(),
-                              max_steps,
-                              [&](const double t) {
-                                Ttrial = T + t * dx.head(q);
-                                if (me > 0)
-                                  btrial = beta + t * dx.tail(me);
-                                w = w0 + t * dw;
-                                natural_map_of_w(radius, e, Ttrial, Ftrial);
-                                return 0.5 * Ftrial.squaredNorm();
-                              });
-        if (accepted)
-          {
-            T.swap(Ttrial);
-            if (me > 0)
-              beta.swap(btrial);
-            F.swap(Ftrial);
-          }
-        return accepted;
-      };
-      if (options.partition_sweeps > 0 && q >= options.partition_sweep_size &&
-          !active_set_converged(F, radius, e, T))
-        settle_partition(c, radius, e, T, beta, F);
-      if (!active_set_converged(F, radius, e, T) && predictor_step(F, dx) &&
-          !line_search(4))
-        natural_map(c, radius, e, T, beta, F); // y and region of T again
-      for (unsigned int step = 0; step <= options.max_iterations; ++step)
-        {
-          result.iterations = step;
-          // Converged on the updated w? Then again on w afresh, so that the
-          // round-off of the updates cannot fake convergence.
-          if (active_set_converged(F, radius, e, T))
-            {
-              natural_map(c, radius, e, T, beta, F);
-              if (active_set_converged(F, radius, e, T))
-                {
-                  result.converged = true;
-                  return result;
-                }
-            }
-          if (step == options.max_iterations)
-            break;
-
-          newton_directions(radius, F, dx);
-          result.message = newton_step(F, dx);
-          if (!result.message.empty())
-            return result;
-          if (line_search(40))
-            continue;
-          // Globalisation fallback: a few PGS sweeps.
-          if (++failures > 50)
-            {
-              result.message = "friction active set: line search failed";
-              return result;
-            }
-          InnerOptions saved     = options;
-          options.max_iterations = 10 * failures;
-          solve_pgs(c, radius, e, T, beta);
-          options = saved;
-          natural_map(c, radius, e, T, beta, F);
-        }
-      result.iterations = options.max_iterations;
-      result.message    = "friction active set: step limit reached";
-      return result;
     }
   } // namespace contact
 } // namespace dpana

@@ -1,5 +1,6 @@
 #include <dpana/contact/problem.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -62,6 +63,34 @@ namespace dpana
 
 
 
+    namespace
+    {
+      // max |A_ij - A_ji|, tile by tile: the transposed tile is read while
+      // it is in cache (A - A^T, with one operand read across the rows of a
+      // column-major matrix, took 2.5 s of a 10 092-unknown solve).
+      double
+      asymmetry(const Eigen::MatrixXd &A)
+      {
+        constexpr Eigen::Index tile = 64;
+        const Eigen::Index     n    = A.rows();
+        double                 most = 0.0;
+        for (Eigen::Index j0 = 0; j0 < n; j0 += tile)
+          for (Eigen::Index i0 = j0; i0 < n; i0 += tile)
+            {
+              const Eigen::Index ni = std::min(tile, n - i0),
+                                 nj = std::min(tile, n - j0);
+              most                  = std::max(most,
+                              (A.block(i0, j0, ni, nj) -
+                               A.block(j0, i0, nj, ni).transpose())
+                                .cwiseAbs()
+                                .maxCoeff());
+            }
+        return most;
+      }
+    } // namespace
+
+
+
     void
     ContactProblem::validate() const
     {
@@ -91,8 +120,7 @@ namespace dpana
         if (mu[j] < 0)
           fail("mu[" + std::to_string(j) + "] = " + std::to_string(mu[j]) +
                " is negative");
-      const double scale = A.cwiseAbs().maxCoeff();
-      if ((A - A.transpose()).cwiseAbs().maxCoeff() > 1e-10 * scale)
+      if (asymmetry(A) > 1e-10 * A.cwiseAbs().maxCoeff())
         fail("A is not symmetric");
       if (dim == 2 && cone != ConeModel::interval)
         fail("in 2D the friction set is the interval (cone = interval)");

@@ -167,6 +167,31 @@ namespace dpana
                        Eigen::VectorXd       &beta,
                        Eigen::VectorXd       &F);
 
+      // The start of solve_active_set: the predictor and the partition
+      // sweeps (friction_qp_active_set.cc); (T, beta, F) move.
+      void
+      start_active_set(const Eigen::VectorXd &c,
+                       const Eigen::VectorXd &radius,
+                       const Eigen::VectorXd &e,
+                       Eigen::VectorXd       &T,
+                       Eigen::VectorXd       &beta,
+                       Eigen::VectorXd       &F,
+                       Eigen::VectorXd       &dx);
+
+      // Along dx: non-monotone Armijo backtracking (at most max_steps
+      // halvings) or, with contraction > 0, the full step if it brings
+      // 1/2 ||F||^2 below contraction times its value. An accepted step
+      // moves (T, beta, F); returns whether one was accepted.
+      bool
+      line_search(const Eigen::VectorXd &radius,
+                  const Eigen::VectorXd &e,
+                  const Eigen::VectorXd &dx,
+                  Eigen::VectorXd       &T,
+                  Eigen::VectorXd       &beta,
+                  Eigen::VectorXd       &F,
+                  const unsigned int     max_steps,
+                  const double           contraction = 0.0);
+
       bool
       active_set_converged(const Eigen::VectorXd &F,
                            const Eigen::VectorXd &radius,
@@ -178,11 +203,21 @@ namespace dpana
                         const Eigen::VectorXd &F,
                         Eigen::VectorXd       &dx);
 
+      // With refactor = false the factors of the last Newton matrix are
+      // used as they are (a chord step; same partition, hence the same
+      // number of directions).
       std::string
-      newton_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx);
+      newton_step(const Eigen::VectorXd &F,
+                  Eigen::VectorXd       &dx,
+                  const bool             refactor = true);
+
+      // Whether the factors of the last Newton matrix can serve the
+      // directions just found: same partition, same number of directions.
+      bool
+      factors_fit() const;
 
       // The first step of a warm started solve, with the Jacobian of the
-      // last Newton step of the previous solve (friction_qp.cc).
+      // last Newton step of the previous solve (friction_qp_active_set.cc).
       bool
       predictor_step(const Eigen::VectorXd &F, Eigen::VectorXd &dx);
 
@@ -229,10 +264,16 @@ namespace dpana
       Eigen::VectorXd  y_last, radius_last;
       std::vector<int> region_last;
       Eigen::VectorXd  g, x, v; // v = M dT_fixed
-      Eigen::MatrixXd  B;
+      // The line search: w and M dx at its start, the trial point, and the
+      // merits of the last accepted iterates.
+      Eigen::VectorXd     w0, dw, T_trial, beta_trial, F_trial;
+      std::vector<double> recent_merits;
+      Eigen::MatrixXd     B;
       // Direct factorisation: M Z, H, Cholesky of H.
       Eigen::MatrixXd MZ, H;
       DenseCholesky   llt;
+      // Number of directions of the factored Newton matrix (-1: none).
+      Eigen::Index factored_directions = -1;
       // Blocked factorisation: components of the stick and the slip blocks,
       // the first component of each block among them (-1: none), Cholesky
       // of M_ss, P = M_ss^{-1} M_sl and Sigma (kept for cached_partition),

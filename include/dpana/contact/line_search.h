@@ -21,16 +21,29 @@ namespace dpana
      * trial point x + t dx (the caller keeps it) and returns its merit.
      * Returns whether a step was accepted; the trial point of the last call
      * is then the accepted one.
+     *
+     * Non-monotone variant (Grippo, Lampariello and Lucidi, SIAM J. Numer.
+     * Anal. 23, 1986): with @p phi_reference >= phi, the largest merit of
+     * the last few iterates, the test is
+     *
+     *   phi(x + t dx) <= phi_reference - 2e-4 t phi(x),
+     *
+     * which lets a full Newton step through that raises the merit for a
+     * moment (a few blocks crossing their stick / slip boundary) where the
+     * monotone test would cut it to a sliver; the merit still decreases
+     * over every window of steps.
      */
     template <typename TrialMerit>
     bool
     armijo_backtracking(const double       phi,
                         const unsigned int max_steps,
-                        TrialMerit       &&trial_merit)
+                        TrialMerit       &&trial_merit,
+                        const double       phi_reference = -1.0)
     {
-      double t = 1.0;
+      const double reference = (phi_reference >= phi) ? phi_reference : phi;
+      double       t         = 1.0;
       for (unsigned int k = 0; k < max_steps; ++k, t *= 0.5)
-        if (trial_merit(t) <= (1.0 - 2e-4 * t) * phi)
+        if (trial_merit(t) <= reference - 2e-4 * t * phi)
           return true;
       return false;
     }

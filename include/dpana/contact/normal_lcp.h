@@ -57,6 +57,11 @@ namespace dpana
       unsigned int partition_sweeps = 0;
       // ... in T-steps of at least this many tangential unknowns.
       unsigned int partition_sweep_size = 1000;
+      // Active-set T-step only: a Newton step whose partition is that of the
+      // last factored Newton matrix first tries that matrix's factors (a
+      // chord step, kept if it halves ||F||); false: every step is an exact
+      // Newton step with its own factorisation.
+      bool chord_steps = true;
       // Active-set N-step only: with at least this many normal unknowns, a
       // contact set C with fewer elements outside than inside is solved
       // through H = M^{-1} (formed once, n^3 flops) and a Cholesky factor of

@@ -142,12 +142,21 @@ TEST(InnerSolvers, FrictionQpActiveSetAgreesWithPgs)
         InnerOptions options;
         options.tolerance      = 1e-13;
         options.max_iterations = 200000;
-        FrictionQp        pgs(M, G, set, options), newton(M, G, set, options);
+        // The exact Newton steps (the step count below is that of Newton's
+        // method) and the default with chord steps.
+        InnerOptions exact_options = options;
+        exact_options.chord_steps  = false;
+        FrictionQp pgs(M, G, set, options), newton(M, G, set, exact_options),
+          chord(M, G, set, options);
         Eigen::VectorXd   T_pgs = Eigen::VectorXd::Zero(q), T_newton = T_pgs;
         Eigen::VectorXd   beta_pgs, beta_newton;
         const InnerResult r_pgs = pgs.solve_pgs(c, radius, e, T_pgs, beta_pgs);
         const InnerResult r_newton =
           newton.solve_active_set(c, radius, e, T_newton, beta_newton);
+        Eigen::VectorXd   T_chord = Eigen::VectorXd::Zero(q), beta_chord;
+        const InnerResult r_chord =
+          chord.solve_active_set(c, radius, e, T_chord, beta_chord);
+        ASSERT_TRUE(r_chord.converged) << r_chord.message;
         ASSERT_TRUE(r_pgs.converged) << r_pgs.message;
         ASSERT_TRUE(r_newton.converged) << r_newton.message;
         // Mixed set of states (else the test would not exercise the
@@ -176,8 +185,18 @@ TEST(InnerSolvers, FrictionQpActiveSetAgreesWithPgs)
           pgs.solve_pgs(c2, radius, e, T2_pgs, beta2_pgs);
         const InnerResult r2_newton =
           newton.solve_active_set(c2, radius, e, T2_newton, beta2_newton);
+        Eigen::VectorXd   T2_chord = T_chord, beta2_chord = beta_chord;
+        const InnerResult r2_chord =
+          chord.solve_active_set(c2, radius, e, T2_chord, beta2_chord);
         ASSERT_TRUE(r2_pgs.converged) << r2_pgs.message;
         ASSERT_TRUE(r2_newton.converged) << r2_newton.message;
+        ASSERT_TRUE(r2_chord.converged) << r2_chord.message;
+        // Chord steps end at the same minimiser (the stopping test is the
+        // same natural map).
+        EXPECT_LE(relative_difference(T_pgs, T_chord), 1e-8)
+          << "dim " << model.dim << " rows " << rows << " (chord)";
+        EXPECT_LE(relative_difference(T2_pgs, T2_chord), 1e-8)
+          << "dim " << model.dim << " rows " << rows << " (chord, warm)";
         EXPECT_LE(relative_difference(T2_pgs, T2_newton), 1e-8)
           << "dim " << model.dim << " rows " << rows << " (warm)";
         // Exact Newton steps from a start this close: finite termination

@@ -2,6 +2,7 @@
 // options throws std::invalid_argument with a one-line message that names
 // the offending field.
 #include <functional>
+#include <utility>
 
 #include "contact_test_tools.h"
 #include <gtest/gtest.h>
@@ -60,6 +61,19 @@ TEST(Validation, Problem)
     auto p = good();
     p.A(0, 1) += 1.0;
     check(p, "symmetric");
+  }
+  {
+    // Larger than one tile of the symmetry check (64 rows): an asymmetry
+    // far from the diagonal, in either triangle, and a symmetric A of that
+    // size that passes.
+    auto big = random_problem(3, 70, 0.3, 7, ConeModel::disc);
+    EXPECT_NO_THROW(big.validate());
+    for (const auto &[i, j] : {std::pair{200, 3}, std::pair{5, 130}})
+      {
+        auto p = big;
+        p.A(i, j) += 1e-3;
+        check(p, "symmetric");
+      }
   }
   {
     auto p  = good();
