@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace dpana
 {
@@ -70,8 +71,17 @@ namespace dpana
 
 
     // @sect4{Block projected Gauss-Seidel}
+    //
+    // A sweep reads the whole matrix once, column pair by column pair (the
+    // update of w after each block), and at 10^4 contact unknowns that read
+    // is most of its time: the partition sweeps (settle_partition) use a
+    // single precision copy, which halves it. Their w then carries relative
+    // errors of about 1e-7, which can move a block across its boundary
+    // only where the Newton steps that follow would move it back: those
+    // steps, the stopping test and the fallback sweeps are in double.
+    template <typename Matrix>
     int
-    FrictionQp::pgs(const Eigen::MatrixXd     &matrix,
+    FrictionQp::pgs(const Matrix              &matrix,
                     const std::vector<double> &W,
                     const Eigen::VectorXd     &right_hand_side,
                     const Eigen::VectorXd     &radius,
@@ -79,7 +89,10 @@ namespace dpana
                     const unsigned int         max_sweeps)
     {
       auto refresh = [&]() {
-        w.noalias() = matrix * T;
+        if constexpr (std::is_same_v<typename Matrix::Scalar, double>)
+          w.noalias() = matrix * T;
+        else
+          w = (matrix * T.cast<float>()).template cast<double>();
         w += right_hand_side;
       };
       auto sweep = [&](double &change, double &size) {
@@ -96,8 +109,9 @@ namespace dpana
 
     // The exact minimiser of the block problem of element j, relaxed, and
     // the column update of w.
+    template <typename Matrix>
     void
-    FrictionQp::block_step(const Eigen::MatrixXd     &matrix,
+    FrictionQp::block_step(const Matrix              &matrix,
                            const std::vector<double> &W,
                            const Eigen::VectorXd     &radius,
                            const unsigned int         j,
@@ -122,10 +136,19 @@ namespace dpana
         }
       if (!moved)
         return;
-      if (m == 1)
-        w += delta[0] * matrix.col(j);
+      if constexpr (std::is_same_v<typename Matrix::Scalar, double>)
+        {
+          if (m == 1)
+            w += delta[0] * matrix.col(j);
+          else
+            w +=
+              matrix.middleCols(2 * j, 2) * Eigen::Vector2d(delta[0], delta[1]);
+        }
+      else if (m == 1)
+        w += delta[0] * matrix.col(j).template cast<double>();
       else
-        w += matrix.middleCols(2 * j, 2) * Eigen::Vector2d(delta[0], delta[1]);
+        w += delta[0] * matrix.col(2 * j).template cast<double>() +
+             delta[1] * matrix.col(2 * j + 1).template cast<double>();
     }
 
 
@@ -137,9 +160,19 @@ namespace dpana
                           Eigen::VectorXd       &T,
                           Eigen::VectorXd       &beta)
     {
+      if (single_precision_sweeps && M_single.size() == 0)
+        M_single = (G.rows() > 0 ? M_augmented : M).cast<float>();
+      const auto sweeps = [&](const Eigen::MatrixXd     &matrix,
+                              const std::vector<double> &W,
+                              const Eigen::VectorXd     &r,
+                              const unsigned int         max_sweeps) {
+        return single_precision_sweeps ?
+                 pgs(M_single, W, r, radius, T, max_sweeps) :
+                 pgs(matrix, W, r, radius, T, max_sweeps);
+      };
       if (G.rows() == 0)
-        return sweeps_result(
-          pgs(M, blocks, c, radius, T, options.max_iterations), "friction");
+        return sweeps_result(sweeps(M, blocks, c, options.max_iterations),
+                             "friction");
       return solve_with_multipliers(
         G,
         e,
@@ -148,7 +181,7 @@ namespace dpana
         options,
         "friction",
         [&](const Eigen::VectorXd &r, const unsigned int max_sweeps) {
-          return pgs(M_augmented, blocks_augmented, r, radius, T, max_sweeps);
+          return sweeps(M_augmented, blocks_augmented, r, max_sweeps);
         },
         rhs,
         T,

@@ -149,7 +149,8 @@ namespace dpana
       const InnerOptions     saved  = options;
       std::vector<int>       before = region;
       unsigned int           sweeps = 0, unchanged = 0;
-      options.max_iterations = chunk;
+      options.max_iterations  = chunk;
+      single_precision_sweeps = true;
       while (sweeps < saved.partition_sweeps && unchanged < 2)
         {
           solve_pgs(c, radius, e, T, beta);
@@ -158,7 +159,8 @@ namespace dpana
           unchanged = (region == before) ? unchanged + 1 : 0;
           before    = region;
         }
-      options = saved;
+      options                 = saved;
+      single_precision_sweeps = false;
       return sweeps;
     }
 

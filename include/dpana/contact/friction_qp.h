@@ -100,8 +100,11 @@ namespace dpana
       }
 
     private:
+      // Sweeps over a matrix in double (Eigen::MatrixXd) or, for the
+      // partition sweeps, single precision (Eigen::MatrixXf).
+      template <typename Matrix>
       int
-      pgs(const Eigen::MatrixXd     &matrix,
+      pgs(const Matrix              &matrix,
           const std::vector<double> &blocks,
           const Eigen::VectorXd     &rhs,
           const Eigen::VectorXd     &radius,
@@ -110,8 +113,9 @@ namespace dpana
 
       // One block of a sweep (the exact local minimiser, relaxed, and the
       // column update of w), raising change and size.
+      template <typename Matrix>
       void
-      block_step(const Eigen::MatrixXd     &matrix,
+      block_step(const Matrix              &matrix,
                  const std::vector<double> &blocks,
                  const Eigen::VectorXd     &radius,
                  const unsigned int         j,
@@ -145,8 +149,13 @@ namespace dpana
       Eigen::VectorXd        rho;
       double                 penalty = 0;
       Eigen::MatrixXd        M_augmented;
-      Eigen::VectorXd        w, rhs, y;
-      std::vector<int>       region;
+      // The matrix of the sweeps (M, or M_augmented with equality rows) in
+      // single precision, made at the first partition sweep; the sweeps
+      // of solve_pgs use it while single_precision_sweeps is set.
+      Eigen::MatrixXf  M_single;
+      bool             single_precision_sweeps = false;
+      Eigen::VectorXd  w, rhs, y;
+      std::vector<int> region;
 
       // The steps of solve_active_set (friction_qp.cc): a feasible start,
       // the stopping test, the eigen-directions of the projection
