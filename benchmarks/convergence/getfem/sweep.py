@@ -8,6 +8,9 @@ families.py):
   hertz_rigid_mu0           hertz.py --body circle (the circular body)
   hertz_rigid_mu0_r10       the same (paired with dpana's disc refined
                             within 10 mm instead of 14)
+  hertz_rigid_mu0_graded, hertz_rigid_mu1_graded
+                            the same as hertz_rigid_mu0, _mu1 (paired with
+                            dpana's graded gmsh mesh of the disc)
   hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
                             the centre)
   receding_2d_mu0           receding.py
@@ -52,6 +55,11 @@ FAMILIES = {
     # The same GetFEM sweep, paired with dpana's leaner disc mesh.
     "hertz_rigid_mu0_r10": (["hertz.py", "--body", "circle"], range(-2, 5),
                             [5]),
+    # The same GetFEM sweeps, paired with dpana's graded disc.
+    "hertz_rigid_mu0_graded": (["hertz.py", "--body", "circle"],
+                               range(-2, 5), [5]),
+    "hertz_rigid_mu1_graded": (["hertz.py", "--body", "circle", "--mu", "1"],
+                               range(-2, 5), [5]),
     "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
                                  range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
