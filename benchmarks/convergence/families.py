@@ -223,6 +223,21 @@ for ratio in ("1", "1e-3", "1e3"):
             quantities=HERTZ_Q, plot=("N_max", "a_m"),
             exact={"resultant": 100000.0}, hertz=True,
             note="Circular body on a graded elastic block"))
+# The equal-moduli pair with the disc on its graded gmsh mesh (refined
+# within the scene's 17 mm, the arc divided as the generator's within
+# 28.125 deg, beyond the candidate surface's 16 mm); the foundation's grid
+# is the scene's.
+RHO17 = ("--set", "Rho=17", "--set", "Arc=28.125")
+FAMILIES.append(Family(
+    "hertz_ratio_1_mu0_graded", "hertz_ratio_1_mu0_graded.prm", 2,
+    [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
+                  "Body 2/Geometry/Global refinements": str(g)})
+     for g in range(0, 5)],
+    [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
+                  "Body 2/Geometry/Global refinements": "5"})],
+    quantities=HERTZ_Q, plot=("N_max", "a_m"),
+    exact={"resultant": 100000.0}, hertz=True,
+    note="Circular body (graded gmsh mesh) on a graded elastic block"))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,

@@ -20,6 +20,7 @@ families.py):
                             the elastic foundation, mu = 1)
   hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
                             body on the elastic block, equal moduli)
+  hertz_ratio_1_mu0_graded  the same (paired with dpana's graded disc)
   hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
@@ -71,6 +72,9 @@ FAMILIES = {
                            [5]),
     "hertz_ratio_1_mu0": (["hertz.py", "--body", "circle", "--ratio", "1"],
                           range(0, 4), [4]),
+    # The same GetFEM sweep, paired with dpana's graded disc.
+    "hertz_ratio_1_mu0_graded": (["hertz.py", "--body", "circle", "--ratio",
+                                  "1"], range(0, 4), [4]),
     "hertz_ratio_1e-3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                               "1e-3"], range(0, 4), [4]),
     "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
