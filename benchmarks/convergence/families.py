@@ -75,20 +75,32 @@ class SphereMesh:
     cache directory and returns its absolute path; its making is not
     timed (dpana reads it in its assembly phase)."""
 
+    script, stem = "make_sphere.py", "sphere"
+
     def __init__(self, level, *options):
         self.level, self.options = level, list(options)
 
     def path(self, prm_dir):
         cache = os.path.join(tempfile.gettempdir(), "dpana_convergence_meshes")
         os.makedirs(cache, exist_ok=True)
-        name = "_".join(["sphere", f"L{self.level}"] + [
+        name = "_".join([self.stem, f"L{self.level}"] + [
             o.replace("=", "").replace("-", "") for o in self.options])
         out = os.path.join(cache, name + ".msh")
         script = os.path.join(prm_dir, "..", "scripts", "meshes",
-                              "make_sphere.py")
+                              self.script)
         subprocess.run(["python3", script, out, "--level", str(self.level)]
                        + self.options, check=True, stdout=subprocess.DEVNULL)
         return out
+
+
+class DiscMesh(SphereMesh):
+    """The graded gmsh mesh of the 2D circular body at one level
+    (scripts/meshes/make_disc.py --level L: the arc near the contact point
+    divided as the right half disc with L global and 5 contact refinements
+    divides it, the size growing away from it as in the GetFEM harness's
+    meshes), cached and untimed as the sphere's."""
+
+    script, stem = "make_disc.py", "disc"
 
 
 def sphere(levels, bodies=(("Body 1", ()),)):
@@ -104,6 +116,13 @@ def contact_refinements(ms, body="Body 1", shape="Right half disc"):
     return [(2.0 ** (5 - m), {f"{body}/Geometry/Global refinements": "0",
                               f"{body}/Geometry/{shape}/Contact refinements":
                               str(m)}) for m in ms]
+
+
+def disc_meshes(levels, body="Body 1"):
+    """The graded disc at make_disc.py levels L: h = 2^-L, the h of the
+    right half disc with the same chords on the candidate surface."""
+    return [(2.0 ** -level, {f"{body}/Geometry/Gmsh/Mesh file":
+                             DiscMesh(level)}) for level in levels]
 
 
 def global_refinements(gs, bodies=("Body 1",)):
@@ -161,6 +180,18 @@ for mu in ("mu0", "mu1"):
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
         note="Circular body (right half disc), force at the far pole"))
+# The same scenes on the graded gmsh mesh of the disc (scripts/meshes/
+# make_disc.py): the same faces on the candidate surface at each h, the
+# element size growing from 14 mm on as in GetFEM's meshes, so that both
+# codes solve about the same number of unknowns.
+for mu in ("mu0", "mu1"):
+    FAMILIES.append(Family(
+        f"hertz_rigid_{mu}_graded", f"hertz_rigid_{mu}_graded.prm", 2,
+        disc_meshes(range(-2, 6)), disc_meshes([6]),
+        quantities=HERTZ_Q, plot=("N_max", "a_m"),
+        exact={"resultant": 100000.0}, hertz=True,
+        note="Circular body (right half disc), force at the far pole; "
+             "graded gmsh mesh"))
 # The same scene on a leaner mesh: contact refinements within 10 mm of the
 # contact point instead of 14 (a = 8.6 mm), the same contact elements in
 # the contact zone with half the dofs (GetFEM's meshes are refined within
@@ -192,6 +223,21 @@ for ratio in ("1", "1e-3", "1e3"):
             quantities=HERTZ_Q, plot=("N_max", "a_m"),
             exact={"resultant": 100000.0}, hertz=True,
             note="Circular body on a graded elastic block"))
+# The equal-moduli pair with the disc on its graded gmsh mesh (refined
+# within the scene's 17 mm, the arc divided as the generator's within
+# 28.125 deg, beyond the candidate surface's 16 mm); the foundation's grid
+# is the scene's.
+RHO17 = ("--set", "Rho=17", "--set", "Arc=28.125")
+FAMILIES.append(Family(
+    "hertz_ratio_1_mu0_graded", "hertz_ratio_1_mu0_graded.prm", 2,
+    [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
+                  "Body 2/Geometry/Global refinements": str(g)})
+     for g in range(0, 5)],
+    [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
+                  "Body 2/Geometry/Global refinements": "5"})],
+    quantities=HERTZ_Q, plot=("N_max", "a_m"),
+    exact={"resultant": 100000.0}, hertz=True,
+    note="Circular body (graded gmsh mesh) on a graded elastic block"))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,

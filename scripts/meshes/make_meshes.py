@@ -10,7 +10,9 @@ mesh:
 
 e.g. `# mesh: meshes/hertz_sphere_L4.msh --level 4`. Each such mesh is
 written by make_sphere.py (path relative to the working directory, as the
-scene's `Mesh file`), unless it exists already with the same options.
+scene's `Mesh file`), unless it exists already with the same options. A
+line `# disc mesh: OUT.msh [options of make_disc.py]` writes the graded
+mesh of the 2D circular body by make_disc.py in the same way.
 ./run.sh calls this before every run; a scene without such lines is left
 alone.
 """
@@ -31,11 +33,12 @@ def main():
     except OSError:
         return  # dpana itself reports a scene it cannot read
     for line in lines:
-        match = re.match(r"#\s*mesh:\s*(\S+)(.*)$", line)
+        match = re.match(r"#\s*(disc\s+)?mesh:\s*(\S+)(.*)$", line)
         if not match:
             continue
-        output, options = match.group(1), shlex.split(match.group(2))
-        subprocess.run([sys.executable, os.path.join(HERE, "make_sphere.py"),
+        script = "make_disc.py" if match.group(1) else "make_sphere.py"
+        output, options = match.group(2), shlex.split(match.group(3))
+        subprocess.run([sys.executable, os.path.join(HERE, script),
                         output] + options, check=True)
 
 

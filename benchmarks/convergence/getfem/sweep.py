@@ -8,6 +8,9 @@ families.py):
   hertz_rigid_mu0           hertz.py --body circle (the circular body)
   hertz_rigid_mu0_r10       the same (paired with dpana's disc refined
                             within 10 mm instead of 14)
+  hertz_rigid_mu0_graded, hertz_rigid_mu1_graded
+                            the same as hertz_rigid_mu0, _mu1 (paired with
+                            dpana's graded gmsh mesh of the disc)
   hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
                             the centre)
   receding_2d_mu0           receding.py
@@ -17,6 +20,7 @@ families.py):
                             the elastic foundation, mu = 1)
   hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
                             body on the elastic block, equal moduli)
+  hertz_ratio_1_mu0_graded  the same (paired with dpana's graded disc)
   hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
@@ -52,6 +56,11 @@ FAMILIES = {
     # The same GetFEM sweep, paired with dpana's leaner disc mesh.
     "hertz_rigid_mu0_r10": (["hertz.py", "--body", "circle"], range(-2, 5),
                             [5]),
+    # The same GetFEM sweeps, paired with dpana's graded disc.
+    "hertz_rigid_mu0_graded": (["hertz.py", "--body", "circle"],
+                               range(-2, 5), [5]),
+    "hertz_rigid_mu1_graded": (["hertz.py", "--body", "circle", "--mu", "1"],
+                               range(-2, 5), [5]),
     "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
                                  range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
@@ -63,6 +72,9 @@ FAMILIES = {
                            [5]),
     "hertz_ratio_1_mu0": (["hertz.py", "--body", "circle", "--ratio", "1"],
                           range(0, 4), [4]),
+    # The same GetFEM sweep, paired with dpana's graded disc.
+    "hertz_ratio_1_mu0_graded": (["hertz.py", "--body", "circle", "--ratio",
+                                  "1"], range(0, 4), [4]),
     "hertz_ratio_1e-3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                               "1e-3"], range(0, 4), [4]),
     "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
