@@ -15,36 +15,15 @@ Rho, Growth). An existing OUT.msh made with the same parameters is kept
 (the parameters are stored next to it in OUT.msh.args).
 """
 import argparse
-import os
-import subprocess
 import sys
 
-GEO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "disc.geo")
+from gmsh_mesh import count_type, element_counts, write_mesh
+
 NAMES = ("R", "Arc", "Rho", "Growth")
 
 
 def fail(message):
     sys.exit("make_disc.py: error: " + message)
-
-
-def mesh_size(path):
-    """Nodes, triangles and arc faces (physical tag 1) of a format 2.2 file."""
-    n_nodes, n_triangles, n_arc = 0, 0, 0
-    with open(path) as f:
-        section = None
-        for line in f:
-            if line.startswith("$"):
-                section = line.strip()
-                continue
-            fields = line.split()
-            if section == "$Nodes" and n_nodes == 0:
-                n_nodes = int(fields[0])
-            elif section == "$Elements" and len(fields) > 4:
-                if fields[1] == "2":
-                    n_triangles += 1
-                elif fields[1] == "1" and fields[3] == "1":
-                    n_arc += 1
-    return n_nodes, n_triangles, n_arc
 
 
 def main():
@@ -73,23 +52,11 @@ def main():
             fail("--set %s: expected NAME=NUMBER" % item)
         if not values[name] > 0:
             fail("--set %s: %s must be positive" % (item, name))
-    command = ["gmsh", "-2", "-v", "2", GEO, "-o", args.output]
-    for name, value in sorted(values.items()):
-        command[1:1] = ["-setnumber", name, repr(float(value))]
-    stamp = args.output + ".args"
-    key = " ".join(command[:-2])
-    if not (os.path.exists(args.output) and os.path.exists(stamp)
-            and open(stamp).read() == key):
-        if os.path.dirname(args.output):
-            os.makedirs(os.path.dirname(args.output), exist_ok=True)
-        try:
-            subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-        except (OSError, subprocess.CalledProcessError) as e:
-            fail("gmsh failed (%s)" % e)
-        with open(stamp, "w") as f:
-            f.write(key)
+    write_mesh("make_disc.py", "disc.geo", 2, values, args.output)
 
-    n_nodes, n_triangles, n_arc = mesh_size(args.output)
+    n_nodes, counts = element_counts(args.output)
+    # Triangles (gmsh type 2); the arc is the lines (type 1) of tag 1.
+    n_triangles, n_arc = count_type(counts, 2), counts.get((1, 1), 0)
     print("%s: %d nodes (%d displacement unknowns), %d triangles, %d faces "
           "on the arc" % (args.output, n_nodes, 2 * n_nodes, n_triangles,
                           n_arc))

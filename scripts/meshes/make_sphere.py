@@ -17,35 +17,9 @@ existing OUT.msh made with the same parameters is kept (the parameters are
 stored next to it in OUT.msh.args).
 """
 import argparse
-import os
-import subprocess
 import sys
 
-GEO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "sphere.geo")
-
-
-def mesh_size(path):
-    """Nodes, tetrahedra and triangles per physical tag of a format 2.2 file."""
-    n_nodes, n_tets, triangles = 0, 0, {}
-    with open(path) as f:
-        section = None
-        for line in f:
-            if line.startswith("$"):
-                section = line.strip()
-                continue
-            if section == "$Nodes" and n_nodes == 0:
-                n_nodes = int(line)
-            elif section == "$Elements":
-                fields = line.split()
-                if len(fields) < 4:
-                    continue
-                if fields[1] == "4":
-                    n_tets += 1
-                elif fields[1] == "2":
-                    tag = int(fields[3])
-                    triangles[tag] = triangles.get(tag, 0) + 1
-    return n_nodes, n_tets, triangles
-
+from gmsh_mesh import count_type, element_counts, write_mesh
 
 def round_coordinates(path, digits):
     """Rewrites the $Nodes section of a format 2.2 file with fewer digits."""
@@ -78,26 +52,17 @@ def main():
             sys.exit("make_sphere.py: error: --set %s: expected NAME=VALUE"
                      % item)
         values[name] = float(value)
-    command = ["gmsh", "-3", "-v", "2", GEO, "-o", args.output]
-    for name, value in sorted(values.items()):
-        command[1:1] = ["-setnumber", name, repr(float(value))]
-    stamp = args.output + ".args"
-    key = " ".join(command[:-2]) + " digits %d" % args.digits
-    if not (os.path.exists(args.output) and os.path.exists(stamp)
-            and open(stamp).read() == key):
-        if os.path.dirname(args.output):
-            os.makedirs(os.path.dirname(args.output), exist_ok=True)
-        try:
-            subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-        except (OSError, subprocess.CalledProcessError) as e:
-            sys.exit("make_sphere.py: error: gmsh failed (%s)" % e)
-        if args.digits > 0:
-            round_coordinates(args.output, args.digits)
-        with open(stamp, "w") as f:
-            f.write(key)
+    round_nodes = None
+    if args.digits > 0:
+        def round_nodes(path):
+            round_coordinates(path, args.digits)
+    write_mesh("make_sphere.py", "sphere.geo", 3, values, args.output,
+               key_suffix=" digits %d" % args.digits, after=round_nodes)
 
-    n_nodes, n_tets, triangles = mesh_size(args.output)
-    contact = triangles.get(3, 0)
+    n_nodes, counts = element_counts(args.output)
+    # Tetrahedra (gmsh type 4); the contact cap is the triangles (type 2)
+    # of tag 3.
+    n_tets, contact = count_type(counts, 4), counts.get((2, 3), 0)
     print("%s: %d nodes (%d displacement unknowns), %d tetrahedra, %d "
           "triangles on the contact cap (at most about %d contact unknowns: "
           "dpana merges small leftover groups into their neighbours)"

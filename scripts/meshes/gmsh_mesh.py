@@ -1,0 +1,60 @@
+"""What make_sphere.py and make_disc.py share: running gmsh on a .geo file
+of this directory, unless the mesh exists already with the same parameters,
+and counting the nodes and elements of the format 2.2 file it wrote."""
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def write_mesh(program, geo, dimension, values, output, key_suffix="",
+               after=None):
+    """Runs `gmsh -DIMENSION` on HERE/GEO with `-setnumber NAME VALUE` for
+    each of `values`, writing `output`. The command (with `key_suffix`) is
+    stored in OUTPUT.args; an existing output with the same stored command
+    is kept. `after(output)` runs on a new mesh before the command is
+    stored. A failing gmsh stops with one line `PROGRAM: error: ...`."""
+    command = ["gmsh", "-%d" % dimension, "-v", "2",
+               os.path.join(HERE, geo), "-o", output]
+    for name, value in sorted(values.items()):
+        command[1:1] = ["-setnumber", name, repr(float(value))]
+    stamp = output + ".args"
+    key = " ".join(command[:-2]) + key_suffix
+    if (os.path.exists(output) and os.path.exists(stamp)
+            and open(stamp).read() == key):
+        return
+    if os.path.dirname(output):
+        os.makedirs(os.path.dirname(output), exist_ok=True)
+    try:
+        subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    except (OSError, subprocess.CalledProcessError) as e:
+        sys.exit("%s: error: gmsh failed (%s)" % (program, e))
+    if after is not None:
+        after(output)
+    with open(stamp, "w") as f:
+        f.write(key)
+
+
+def element_counts(path):
+    """The number of nodes, and the number of elements per (gmsh element
+    type, physical tag), of a format 2.2 file."""
+    n_nodes, counts = 0, {}
+    with open(path) as f:
+        section = None
+        for line in f:
+            if line.startswith("$"):
+                section = line.strip()
+                continue
+            fields = line.split()
+            if section == "$Nodes" and n_nodes == 0:
+                n_nodes = int(fields[0])
+            elif section == "$Elements" and len(fields) >= 4:
+                kind = (int(fields[1]), int(fields[3]))
+                counts[kind] = counts.get(kind, 0) + 1
+    return n_nodes, counts
+
+
+def count_type(counts, element_type):
+    """The elements of one gmsh type over all physical tags."""
+    return sum(n for (kind, _), n in counts.items() if kind == element_type)
