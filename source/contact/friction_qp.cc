@@ -38,6 +38,8 @@ namespace dpana
       // columns starting at A. Eigen converts float to double one number at
       // a time, which made a single precision sweep slower than one in
       // double; SSE2 (every x86-64 processor) converts two per instruction.
+      // One column (2D) is taken as the pair (A(:, 0), A(:, 0)) with
+      // weights (delta[0], 0): the second read hits the cache.
       void
       add_single_columns(const float       *A,
                          const unsigned int m,
@@ -45,12 +47,12 @@ namespace dpana
                          const double      *delta,
                          double            *w)
       {
-        const float *c0 = A, *c1 = A + q;
+        const float *c0 = A, *c1 = (m == 2) ? A + q : A;
         const double d0 = delta[0], d1 = (m == 2) ? delta[1] : 0.0;
         Eigen::Index i = 0;
 #ifdef __SSE2__
         const __m128d D0 = _mm_set1_pd(d0), D1 = _mm_set1_pd(d1);
-        for (; m == 2 && i + 4 <= q; i += 4)
+        for (; i + 4 <= q; i += 4)
           {
             const __m128  a = _mm_loadu_ps(c0 + i), b = _mm_loadu_ps(c1 + i);
             const __m128d low = _mm_add_pd(_mm_mul_pd(D0, _mm_cvtps_pd(a)),
@@ -61,21 +63,10 @@ namespace dpana
             _mm_storeu_pd(w + i, _mm_add_pd(_mm_loadu_pd(w + i), low));
             _mm_storeu_pd(w + i + 2, _mm_add_pd(_mm_loadu_pd(w + i + 2), high));
           }
-        for (; m == 1 && i + 4 <= q; i += 4)
-          {
-            const __m128 a = _mm_loadu_ps(c0 + i);
-            _mm_storeu_pd(w + i,
-                          _mm_add_pd(_mm_loadu_pd(w + i),
-                                     _mm_mul_pd(D0, _mm_cvtps_pd(a))));
-            _mm_storeu_pd(
-              w + i + 2,
-              _mm_add_pd(_mm_loadu_pd(w + i + 2),
-                         _mm_mul_pd(D0, _mm_cvtps_pd(_mm_movehl_ps(a, a)))));
-          }
 #endif
         for (; i < q; ++i)
-          w[i] += d0 * static_cast<double>(c0[i]) +
-                  (m == 2 ? d1 * static_cast<double>(c1[i]) : 0.0);
+          w[i] +=
+            d0 * static_cast<double>(c0[i]) + d1 * static_cast<double>(c1[i]);
       }
     } // namespace
 
