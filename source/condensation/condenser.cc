@@ -9,8 +9,11 @@
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <iomanip>
 #include <numeric>
 #include <sstream>
+
+#include <sys/statvfs.h>
 
 namespace dpana
 {
@@ -25,7 +28,9 @@ namespace dpana
       // n_Gamma^2 each, W, n_Gamma x n_c, and A, n_c^2) and the resident
       // memory before the factorisation. On more than one rank the largest
       // resident memory of the ranks is taken, so that all ranks decide
-      // alike.
+      // alike. Out of core the factor is on disk: the workspace is MUMPS'
+      // estimate for an out-of-core factorisation (INFOG(26), the active
+      // frontal matrices and the buffers of its input and output).
       MemoryEstimate
       mumps_estimate(
         const linear_algebra::MumpsSchurFactorization::Statistics &statistics,
@@ -39,12 +44,43 @@ namespace dpana
         m.n_gamma       = statistics.schur_size;
         m.n_c           = n_c;
         const double ng = m.n_gamma, nc = n_c;
-        m.factor       = 1e6 * statistics.estimated_max_mb;
+        m.factor =
+          1e6 * (statistics.out_of_core ? statistics.estimated_ooc_max_mb :
+                                          statistics.estimated_max_mb);
         m.dense        = 8.0 * (2.0 * ng * ng + ng * nc + nc * nc);
         double current = resident_memory();
         MPI_Allreduce(
           &current, &m.current, 1, MPI_DOUBLE, MPI_MAX, communicator);
         return m;
+      }
+
+
+
+      // Out of core, the factor goes to disk: its entries, 8 bytes each
+      // (MUMPS' estimate after the analysis, INFOG(20), summed over the
+      // ranks), must fit in the space free in the directory. An
+      // InputError naming the directory otherwise, on every rank alike.
+      void
+      check_disk_space(
+        const linear_algebra::MumpsSchurFactorization::Statistics &statistics,
+        const std::string                                         &directory,
+        const std::string                                         &body)
+      {
+        struct statvfs disk;
+        if (statvfs(directory.c_str(), &disk) != 0)
+          return;
+        const double available =
+          static_cast<double>(disk.f_bavail) * disk.f_frsize;
+        const double needed = 8.0 * statistics.estimated_factor_entries;
+        if (needed <= available)
+          return;
+        std::ostringstream message;
+        message << body << ": the factor written out of core would need about "
+                << std::setprecision(3) << needed / 1e9
+                << " GB of disk, more than the " << available / 1e9
+                << " GB free in Contact / Out-of-core directory = '"
+                << directory << "'";
+        throw InputError(message.str());
       }
     } // namespace
 
@@ -274,9 +310,12 @@ namespace dpana
         std::make_unique<linear_algebra::MumpsSchurFactorization>(communicator);
       // A body partitioned over the ranks holds its share of K on each.
       mumps->set_matrix_in_shares(mpi && body.n_parts() > 1);
+      mumps->set_out_of_core_directory(parameters.out_of_core_directory);
       mumps->set_analysis_check(
         [this, communicator](
           const linear_algebra::MumpsSchurFactorization::Statistics &s) {
+          if (s.out_of_core)
+            check_disk_space(s, parameters.out_of_core_directory, body.name());
           estimate = mumps_estimate(s,
                                     body.dof_handler().n_dofs(),
                                     dim * surface.n_elements(),

@@ -6,6 +6,9 @@
 
 #include <deal.II/base/patterns.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace dpana
 {
   namespace condensation
@@ -29,6 +32,17 @@ namespace dpana
                         "Cholesky, the surface dofs ordered last) or 'mumps' "
                         "(MUMPS' Schur complement on the surface dofs, "
                         "through PETSc). The blocked solves use CHOLMOD.");
+      prm.declare_entry(
+        "Out-of-core directory",
+        "",
+        dealii::Patterns::Anything(),
+        "Empty (the default): MUMPS holds its factor in memory. A directory "
+        "(absolute, or relative to where dpana runs; it must exist and be "
+        "writable): MUMPS writes its factor to files there (out of core, "
+        "its ICNTL(22) = 1) and reads them back for each solve; the memory "
+        "check then uses MUMPS' out-of-core estimate. The files are removed "
+        "when the factorisation ends. Needs the MUMPS back end "
+        "(Factorisation back end = mumps, or the MPI route).");
       prm.declare_entry("Columns per solve",
                         "256",
                         dealii::Patterns::Integer(1),
@@ -82,6 +96,31 @@ namespace dpana
 
 
 
+    // The out-of-core directory must be one MUMPS can write to: it is
+    // checked here, before any work, rather than by MUMPS in the middle of
+    // a factorisation. MUMPS keeps at most 255 characters of its name.
+    void
+    Parameters::check_out_of_core_directory(const std::string &directory,
+                                            const Backend      backend)
+    {
+      const std::string entry =
+        "Contact / Out-of-core directory = '" + directory + "'";
+      if (backend != Backend::mumps)
+        throw InputError(entry +
+                         " needs Contact / Factorisation back end = mumps "
+                         "(or the MPI route): CHOLMOD factors in memory only");
+      if (directory.size() > 255)
+        throw InputError(entry + ": longer than the 255 characters MUMPS "
+                                 "keeps of a directory name");
+      struct stat status;
+      if (stat(directory.c_str(), &status) != 0 || !S_ISDIR(status.st_mode))
+        throw InputError(entry + ": not an existing directory");
+      if (access(directory.c_str(), W_OK | X_OK) != 0)
+        throw InputError(entry + ": not writable");
+    }
+
+
+
     void
     Parameters::parse_parameters(dealii::ParameterHandler &prm)
     {
@@ -110,6 +149,9 @@ namespace dpana
                              prm.get("Parallel assembly") == "distributed";
       if (backend == Backend::mumps)
         parallel::check_mumps_available();
+      out_of_core_directory = prm.get("Out-of-core directory");
+      if (!out_of_core_directory.empty())
+        check_out_of_core_directory(out_of_core_directory, backend);
       memory_limit_gb        = prm.get_double("Memory limit (GB)");
       const std::string name = prm.get("Schur ordering");
       for (const auto o :

@@ -25,18 +25,32 @@ namespace dpana
     {
       // What MUMPS reports of the factor F, after its analysis or its
       // factorisation.
+      //
+      // MUMPS gives a count of factor entries that does not fit in its
+      // integers as minus the count in millions.
+      long
+      entries(const int infog_value)
+      {
+        return infog_value < 0 ? -1000000L * infog_value : infog_value;
+      }
+
       MumpsSchurFactorization::Statistics
       statistics_of(const Mat F, const unsigned int schur_size)
       {
+        PetscInt ooc = 0;
+        MatMumpsGetIcntl(F, 22, &ooc);
         MumpsSchurFactorization::Statistics s;
+        s.out_of_core              = ooc == 1;
+        s.estimated_ooc_max_mb     = infog(F, 26);
+        s.estimated_ooc_total_mb   = infog(F, 27);
         s.estimated_flops          = parallel::rinfog(F, 1);
         s.flops                    = parallel::rinfog(F, 3);
         s.estimated_max_mb         = infog(F, 16);
         s.estimated_total_mb       = infog(F, 17);
-        s.estimated_factor_entries = infog(F, 20);
+        s.estimated_factor_entries = entries(infog(F, 20));
         s.used_max_mb              = infog(F, 21);
         s.used_total_mb            = infog(F, 22);
-        s.factor_entries           = infog(F, 29);
+        s.factor_entries           = entries(infog(F, 29));
         s.schur_size               = schur_size;
         return s;
       }
@@ -113,6 +127,14 @@ namespace dpana
                                  status == -14 || status == -15;
           if (status == 0)
             break;
+          // MUMPS' error of its out-of-core layer: a file it could not
+          // write or read (a full disk, a directory removed meanwhile).
+          if (status == -90)
+            throw InputError(
+              "MUMPS could not write or read its factor files in Contact / "
+              "Out-of-core directory = '" +
+              out_of_core_directory + "' (INFOG(1) = -90, a matrix of " +
+              std::to_string(free.size()) + " unknowns); is the disk full?");
           if (!workspace || attempt == 3)
             throw NotPositiveDefiniteError(
               "MUMPS' Cholesky factorisation failed (INFOG(1) = " +
@@ -144,6 +166,9 @@ namespace dpana
                          "MPI route need a PETSc configured with MUMPS");
       if (relaxation > 0)
         check(MatMumpsSetIcntl(F, 14, relaxation), "MatMumpsSetIcntl(14)");
+      const bool out_of_core = !out_of_core_directory.empty();
+      if (out_of_core)
+        check(MatMumpsSetIcntl(F, 22, 1), "MatMumpsSetIcntl(22)");
       // MUMPS computes a centralised Schur complement on rank 0: there the
       // index set lists all the unknowns of Gamma, on the other ranks none.
       if (!gamma.empty())
@@ -160,8 +185,20 @@ namespace dpana
         }
       MatFactorInfo info;
       check(MatFactorInfoInitialize(&info), "MatFactorInfoInitialize");
-      check(MatCholeskyFactorSymbolic(F, K, nullptr, &info),
-            "MatCholeskyFactorSymbolic");
+      // Out of core, ICNTL(22) = 1 is set on F above; the directory reaches
+      // MUMPS only through PETSc's options database, which the analysis
+      // reads (-mat_mumps_ooc_tmpdir), so it is put there for the analysis
+      // alone.
+      if (out_of_core)
+        check(PetscOptionsSetValue(nullptr,
+                                   "-mat_mumps_ooc_tmpdir",
+                                   out_of_core_directory.c_str()),
+              "PetscOptionsSetValue(-mat_mumps_ooc_tmpdir)");
+      const PetscErrorCode symbolic =
+        MatCholeskyFactorSymbolic(F, K, nullptr, &info);
+      if (out_of_core)
+        PetscOptionsClearValue(nullptr, "-mat_mumps_ooc_tmpdir");
+      check(symbolic, "MatCholeskyFactorSymbolic");
       if (analysis_check)
         analysis_check(statistics_of(F, gamma.size()));
       const PetscErrorCode code  = MatCholeskyFactorNumeric(F, K, &info);
@@ -448,6 +485,15 @@ namespace dpana
 
 
 
+    void
+    MumpsSchurFactorization::set_out_of_core_directory(
+      const std::string &directory)
+    {
+      impl->out_of_core_directory = directory;
+    }
+
+
+
     MumpsSchurFactorization::Statistics
     MumpsSchurFactorization::statistics() const
     {
@@ -465,7 +511,14 @@ namespace dpana
              " MB (at most " + std::to_string(estimated_max_mb) +
              " MB on one rank), used " + std::to_string(used_total_mb) +
              " MB (at most " + std::to_string(used_max_mb) +
-             " MB on one rank), " + std::to_string(factor_entries) +
+             " MB on one rank), " +
+             (out_of_core ?
+                "out of core (estimated " +
+                  std::to_string(estimated_ooc_total_mb) + " MB, at most " +
+                  std::to_string(estimated_ooc_max_mb) +
+                  " MB on one rank, in memory; the factor on disk), " :
+                std::string()) +
+             std::to_string(factor_entries) +
              " factor entries, Schur complement of " +
              std::to_string(schur_size) + " unknowns";
     }

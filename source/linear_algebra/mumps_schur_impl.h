@@ -12,6 +12,7 @@
 #include <dpana/parallel/petsc_calls.h>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace dpana
@@ -29,7 +30,8 @@ namespace dpana
       MPI_Comm                                communicator;
       std::function<void(const Statistics &)> analysis_check;
       bool                                    in_shares = false;
-      int                                     rank      = 0;
+      std::string                             out_of_core_directory;
+      int                                     rank = 0;
       parallel::RowRange                      rows;
       Mat                                     K = nullptr;
       Mat                                     F = nullptr;

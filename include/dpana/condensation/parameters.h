@@ -9,6 +9,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
+
 namespace dpana
 {
   namespace condensation
@@ -49,6 +51,7 @@ namespace dpana
      *     subsection Contact
      *       set Condensation method    = schur
      *       set Factorisation back end = cholmod
+     *       set Out-of-core directory  =
      *       set Columns per solve      = 256
      *       set Schur ordering         = interior nested dissection
      *       set Memory limit (GB)      = 0
@@ -93,23 +96,42 @@ namespace dpana
        * (`replicated`).
        */
       bool distributed_assembly = false;
+      /**
+       * Where MUMPS writes its factor (out of core, MUMPS' ICNTL(22) = 1);
+       * empty: in memory. Only with Backend::mumps (an InputError with
+       * CHOLMOD); the directory must exist and be writable. The memory
+       * check then uses MUMPS' out-of-core estimate.
+       */
+      std::string out_of_core_directory;
 
       /**
        * Declare the entries Condensation method, Factorisation back end,
-       * Columns per solve, Schur ordering and Memory limit (GB) in the
-       * current subsection of @p prm.
+       * Out-of-core directory, Columns per solve, Schur ordering and Memory
+       * limit (GB) in the current subsection of @p prm.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
 
       /**
        * Read the entries Condensation method, Factorisation back end,
-       * Columns per solve, Schur ordering and Memory limit (GB) from the
-       * current subsection of @p prm. Throws an InputError for the back end
+       * Out-of-core directory, Columns per solve, Schur ordering and Memory
+       * limit (GB) from the current subsection of @p prm. Throws an
+       * InputError for an out-of-core directory that cannot be used
+       * (check_out_of_core_directory()) and for the back end
        * mumps with the blocked solves.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+    private:
+      /**
+       * An InputError naming the entry if @p directory cannot hold the
+       * factor files: the back end is not MUMPS, or it is not an existing,
+       * writable directory.
+       */
+      static void
+      check_out_of_core_directory(const std::string &directory,
+                                  const Backend      backend);
     };
   } // namespace condensation
 } // namespace dpana

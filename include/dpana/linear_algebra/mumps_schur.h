@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 
 #include <mpi.h>
 
@@ -79,6 +80,17 @@ namespace dpana
      * The interior solves are distributed (MatSolve on distributed vectors,
      * ICNTL(26) = 0); their results are gathered on every rank, so solve()
      * and solve_condensed() return the full vector everywhere.
+     *
+     * <h3>Out of core</h3>
+     *
+     * After set_out_of_core_directory(), MUMPS writes the factor of
+     * $K_{II}$ to files in that directory as it computes it (its
+     * ICNTL(22) = 1; the directory is handed to PETSc as the option
+     * -mat_mumps_ooc_tmpdir for the analysis only) and reads it back for
+     * every solve; only the active frontal matrices, $S$ and $L_S$ stay in
+     * memory. The files are MUMPS' own, named with its prefix; MUMPS
+     * removes them when the factorisation is destroyed (its JOB = -2),
+     * which the destructor does also when an exception unwinds the run.
      *
      * <h3>A matrix assembled in shares</h3>
      *
@@ -162,10 +174,15 @@ namespace dpana
        * (INFOG(20)) and that it made (INFOG(29)), and the order of the
        * Schur complement. The inputs of the cost model of
        * benchmarks/parallel. After the analysis only the estimates and
-       * the order are set (the others are 0 or -1).
+       * the order are set (the others are 0 or -1). Out of core, the
+       * memory the analysis estimated for an out-of-core factorisation
+       * (INFOG(26), INFOG(27)) is the one that counts.
        */
       struct Statistics
       {
+        bool         out_of_core              = false;
+        long         estimated_ooc_max_mb     = 0;
+        long         estimated_ooc_total_mb   = 0;
         double       estimated_flops          = 0;
         double       flops                    = 0;
         long         estimated_max_mb         = 0;
@@ -203,6 +220,14 @@ namespace dpana
        */
       void
       set_matrix_in_shares(const bool in_shares);
+
+      /**
+       * Factor out of core, the factor's files in @p directory (see the
+       * class documentation), from the next factorize() on; empty: in
+       * memory, the default. The directory must exist and be writable.
+       */
+      void
+      set_out_of_core_directory(const std::string &directory);
 
     private:
       /**
