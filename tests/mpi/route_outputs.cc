@@ -15,6 +15,8 @@
 //                                         1e-10 for A and 1e-8 for r and u;
 //                                         exit 1 if one is exceeded, a file
 //                                         is missing or sizes differ
+//   dpana_route_outputs --compare D1 D2 T the same with the one tolerance T
+//                                         for A, r and u
 //
 // Started by mpirun with P ranks, the first form runs the MPI route on P
 // ranks; without, the serial route.
@@ -134,20 +136,23 @@ main(int argc, char **argv)
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      if (argc == 4 && std::string(argv[1]) == "--compare")
+      if ((argc == 4 || argc == 5) && std::string(argv[1]) == "--compare")
         {
-          bool ok = agrees(argv[2], argv[3], "A.txt", 1e-10) &&
-                    agrees(argv[2], argv[3], "r.txt", 1e-8) &&
-                    agrees(argv[2], argv[3], "u_1.txt", 1e-8);
+          const double tolerance_A = argc == 5 ? std::stod(argv[4]) : 1e-10;
+          const double tolerance   = argc == 5 ? std::stod(argv[4]) : 1e-8;
+          bool         ok = agrees(argv[2], argv[3], "A.txt", tolerance_A) &&
+                    agrees(argv[2], argv[3], "r.txt", tolerance) &&
+                    agrees(argv[2], argv[3], "u_1.txt", tolerance);
           std::ifstream second(std::string(argv[3]) + "/u_2.txt");
           if (second)
-            ok = agrees(argv[2], argv[3], "u_2.txt", 1e-8) && ok;
+            ok = agrees(argv[2], argv[3], "u_2.txt", tolerance) && ok;
           return ok ? 0 : 1;
         }
       if (argc != 3)
         {
           std::cerr << "usage: dpana_route_outputs FILE.prm DIR\n"
-                       "       dpana_route_outputs --compare DIR1 DIR2\n";
+                       "       dpana_route_outputs --compare DIR1 DIR2 "
+                       "[TOLERANCE]\n";
           return 1;
         }
       const auto outline = dpana::parameters::scan_file(argv[1]);

@@ -11,6 +11,7 @@
 #include <dpana/linear_algebra/mumps_schur.h>
 #include <dpana/scene/scene.h>
 
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -349,4 +350,63 @@ TEST(Condensation, MumpsAnalysisCheckComesBeforeTheFactorisation)
   EXPECT_NEAR(made.flops / seen.estimated_flops, 1.0, 1e-6);
   EXPECT_EQ(made.factor_entries, seen.estimated_factor_entries);
   EXPECT_GT(made.used_total_mb, 0);
+}
+
+
+
+// MUMPS out of core (Contact / Out-of-core directory): while the
+// factorisation lives its factor is in files of the directory, the
+// statistics say out of core, with an out-of-core workspace (INFOG(26)) no
+// larger than the in-core one (INFOG(16)); the condensation (A, s_o) and the
+// recovered displacement equal those of the same factorisation in memory to
+// round-off (1e-12 relative); destroying the factorisation removes the
+// files. On the 3D block and its foundation.
+TEST(Condensation, MumpsOutOfCoreEqualsInCore)
+{
+  auto s = block_3d(true);
+  s->assemble();
+  s->build_contact_surface();
+  const std::filesystem::path directory = "mumps_out_of_core_test";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directory(directory);
+  condensation::Parameters parameters;
+  parameters.backend               = Backend::mumps;
+  parameters.out_of_core_directory = directory.string();
+  for (unsigned int b = 0; b < s->n_bodies(); ++b)
+    {
+      const auto in_core = condensed(*s, b, Method::schur, Backend::mumps);
+      {
+        condensation::Condenser<3> ooc(s->body(b), s->surface(b), parameters);
+        ooc.factorize();
+        EXPECT_FALSE(std::filesystem::is_empty(directory));
+        ooc.assemble_coupling();
+        ooc.condense(16);
+        const auto statistics =
+          dynamic_cast<const linear_algebra::MumpsSchurFactorization &>(
+            ooc.schur_factorization())
+            .statistics();
+        EXPECT_TRUE(statistics.out_of_core);
+        EXPECT_GT(statistics.estimated_ooc_max_mb, 0);
+        EXPECT_LE(statistics.estimated_ooc_max_mb, statistics.estimated_max_mb);
+        EXPECT_FALSE(
+          dynamic_cast<const linear_algebra::MumpsSchurFactorization &>(
+            in_core->schur_factorization())
+            .statistics()
+            .out_of_core);
+        const auto relative = [](const auto &x, const auto &y) {
+          return (x - y).norm() / y.norm();
+        };
+        EXPECT_LT(relative(ooc.compliance(), in_core->compliance()), 1e-12);
+        EXPECT_LT(relative(ooc.load_term(), in_core->load_term()), 1e-12);
+        const Eigen::VectorXd r =
+          Eigen::VectorXd::LinSpaced(ooc.compliance().rows(), -1.0, 1.0);
+        const Eigen::VectorXd alpha = Eigen::VectorXd::Ones(ooc.n_free_modes());
+        const auto            u1    = in_core->recover(r, alpha);
+        auto                  u2    = ooc.recover(r, alpha);
+        u2 -= u1;
+        EXPECT_LT(u2.l2_norm(), 1e-12 * u1.l2_norm());
+      }
+      EXPECT_TRUE(std::filesystem::is_empty(directory));
+    }
+  std::filesystem::remove_all(directory);
 }
