@@ -394,7 +394,7 @@ TEST(Condensation, MumpsOutOfCoreEqualsInCore)
             .statistics()
             .out_of_core);
         const auto relative = [](const auto &x, const auto &y) {
-          return (x - y).norm() / y.norm();
+          return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
         };
         EXPECT_LT(relative(ooc.compliance(), in_core->compliance()), 1e-12);
         EXPECT_LT(relative(ooc.load_term(), in_core->load_term()), 1e-12);
