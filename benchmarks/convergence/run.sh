@@ -73,7 +73,8 @@ cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
 # may be shared).
 repeat="${DPANA_REPEAT:-2}"
 peer_all=(hertz_rigid_mu0 hertz_rigid_mu0_r10 hertz_rigid_mu0_graded
-  hertz_rigid_mu1_graded hertz_ratio_1_mu0_graded hertz_rigid_mu0_d_shaped
+  hertz_rigid_mu1_graded hertz_ratio_1_mu0_graded hertz_ratio_1_mu0_graded_block
+  hertz_rigid_mu0_d_shaped
   receding_2d_mu0
   receding_2d_mu1 two_body_ratio_1 two_body_ratio_1e-3 two_body_ratio_1e3
   hertz_ratio_1_mu0 hertz_ratio_1e-3_mu0 hertz_ratio_1e3_mu0 receding_3d_L80

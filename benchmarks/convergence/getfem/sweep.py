@@ -21,6 +21,9 @@ families.py):
   hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
                             body on the elastic block, equal moduli)
   hertz_ratio_1_mu0_graded  the same (paired with dpana's graded disc)
+  hertz_ratio_1_mu0_graded_block
+                            the same (paired with dpana's graded disc and
+                            graded foundation)
   hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
@@ -75,6 +78,9 @@ FAMILIES = {
     # The same GetFEM sweep, paired with dpana's graded disc.
     "hertz_ratio_1_mu0_graded": (["hertz.py", "--body", "circle", "--ratio",
                                   "1"], range(0, 4), [4]),
+    # ... and with dpana's graded disc and graded foundation.
+    "hertz_ratio_1_mu0_graded_block": (["hertz.py", "--body", "circle",
+                                        "--ratio", "1"], range(0, 4), [4]),
     "hertz_ratio_1e-3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                               "1e-3"], range(0, 4), [4]),
     "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
