@@ -32,6 +32,8 @@ families.py):
   hertz_cavity_mu0, hertz_cavity_mu1
                             hertz.py --body circle --cavity [--mu 1] (the
                             circular body in the cavity R = 120 mm)
+  hertz_cavity_mu0_graded   the same as hertz_cavity_mu0 (paired with
+                            dpana's graded disc and graded cavity)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
   hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
   hertz_two_spheres, hertz_two_spheres_mu03
@@ -89,6 +91,9 @@ FAMILIES = {
                         range(-2, 5), [5]),
     "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
                          range(0, 4), [4]),
+    # The same GetFEM sweep, paired with dpana's graded disc and cavity.
+    "hertz_cavity_mu0_graded": (["hertz.py", "--body", "circle", "--cavity"],
+                                range(0, 4), [4]),
     "hertz_cavity_mu1": (["hertz.py", "--body", "circle", "--cavity", "--mu",
                           "1"], range(0, 4), [4]),
     "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
