@@ -243,17 +243,20 @@ FAMILIES.append(Family(
 # the disc's vertices, the size field of the disc elsewhere), both bodies
 # meshed as GetFEM's.
 BLOCK17 = ("--body", "block") + RHO17
-FAMILIES.append(Family(
-    "hertz_ratio_1_mu0_graded_block", "hertz_ratio_1_mu0_graded_block.prm",
-    2,
-    [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
-                  "Body 2/Geometry/Gmsh/Mesh file": DiscMesh(g, *BLOCK17)})
-     for g in range(0, 5)],
-    [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
-                  "Body 2/Geometry/Gmsh/Mesh file": DiscMesh(5, *BLOCK17)})],
-    quantities=HERTZ_Q, plot=("N_max", "a_m"),
-    exact={"resultant": 100000.0}, hertz=True,
-    note="Circular body on an elastic block, both on graded gmsh meshes"))
+# The same meshes for the rigid punch (E1/E2 = 1e3).
+for ratio, what in (("1", "an elastic block"), ("1e3", "a soft block")):
+    FAMILIES.append(Family(
+        f"hertz_ratio_{ratio}_mu0_graded_block",
+        f"hertz_ratio_{ratio}_mu0_graded_block.prm", 2,
+        [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
+                      "Body 2/Geometry/Gmsh/Mesh file":
+                      DiscMesh(g, *BLOCK17)}) for g in range(0, 5)],
+        [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
+                      "Body 2/Geometry/Gmsh/Mesh file":
+                      DiscMesh(5, *BLOCK17)})],
+        quantities=HERTZ_Q, plot=("N_max", "a_m"),
+        exact={"resultant": 100000.0}, hertz=True,
+        note=f"Circular body on {what}, both on graded gmsh meshes"))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,

@@ -27,6 +27,9 @@ families.py):
   hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
+  hertz_ratio_1e3_mu0_graded_block
+                            the same as hertz_ratio_1e3_mu0 (paired with
+                            dpana's graded disc and graded foundation)
   hertz_rigid_mu1, hertz_ratio_*_mu1
                             the same with --mu 1 (Coulomb friction)
   hertz_cavity_mu0, hertz_cavity_mu1
@@ -87,6 +90,10 @@ FAMILIES = {
                               "1e-3"], range(0, 4), [4]),
     "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                              "1e3"], range(0, 4), [4]),
+    # The same GetFEM sweep, paired with dpana's graded disc and block.
+    "hertz_ratio_1e3_mu0_graded_block": (["hertz.py", "--body", "circle",
+                                          "--ratio", "1e3"], range(0, 4),
+                                         [4]),
     "hertz_rigid_mu1": (["hertz.py", "--body", "circle", "--mu", "1"],
                         range(-2, 5), [5]),
     "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
