@@ -238,6 +238,25 @@ FAMILIES.append(Family(
     quantities=HERTZ_Q, plot=("N_max", "a_m"),
     exact={"resultant": 100000.0}, hertz=True,
     note="Circular body (graded gmsh mesh) on a graded elastic block"))
+# The same pair with the foundation on a graded gmsh mesh too
+# (make_disc.py --body block: its top face divided at the projections of
+# the disc's vertices, the size field of the disc elsewhere), both bodies
+# meshed as GetFEM's.
+BLOCK17 = ("--body", "block") + RHO17
+# The same meshes for the rigid punch (E1/E2 = 1e3).
+for ratio, what in (("1", "an elastic block"), ("1e3", "a soft block")):
+    FAMILIES.append(Family(
+        f"hertz_ratio_{ratio}_mu0_graded_block",
+        f"hertz_ratio_{ratio}_mu0_graded_block.prm", 2,
+        [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
+                      "Body 2/Geometry/Gmsh/Mesh file":
+                      DiscMesh(g, *BLOCK17)}) for g in range(0, 5)],
+        [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
+                      "Body 2/Geometry/Gmsh/Mesh file":
+                      DiscMesh(5, *BLOCK17)})],
+        quantities=HERTZ_Q, plot=("N_max", "a_m"),
+        exact={"resultant": 100000.0}, hertz=True,
+        note=f"Circular body on {what}, both on graded gmsh meshes"))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,
@@ -245,6 +264,23 @@ for mu in ("mu0", "mu1"):
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
         note="Circular body in a cavity R = 120"))
+# The cavity scene with both bodies on graded gmsh meshes (make_disc.py
+# --body cavity: the inner circle divided at the vertical projections of
+# the disc's vertices), refined within the scene's 21 mm, the disc's arc
+# divided as the generator's within 33.75 deg (the candidate surface's
+# 20 mm lie within 30 deg).
+RHO21 = ("--set", "Rho=21", "--set", "Arc=33.75")
+CAVITY21 = ("--body", "cavity") + RHO21
+FAMILIES.append(Family(
+    "hertz_cavity_mu0_graded", "hertz_cavity_mu0_graded.prm", 2,
+    [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO21),
+                  "Body 2/Geometry/Gmsh/Mesh file": DiscMesh(g, *CAVITY21)})
+     for g in range(0, 5)],
+    [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO21),
+                  "Body 2/Geometry/Gmsh/Mesh file": DiscMesh(5, *CAVITY21)})],
+    quantities=HERTZ_Q, plot=("N_max", "a_m"),
+    exact={"resultant": 100000.0}, hertz=True,
+    note="Circular body in a cavity R = 120, both on graded gmsh meshes"))
 FAMILIES.append(Family(
     "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
     sphere(range(0, 5)), sphere([5]),

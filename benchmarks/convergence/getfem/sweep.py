@@ -21,14 +21,22 @@ families.py):
   hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
                             body on the elastic block, equal moduli)
   hertz_ratio_1_mu0_graded  the same (paired with dpana's graded disc)
+  hertz_ratio_1_mu0_graded_block
+                            the same (paired with dpana's graded disc and
+                            graded foundation)
   hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
+  hertz_ratio_1e3_mu0_graded_block
+                            the same as hertz_ratio_1e3_mu0 (paired with
+                            dpana's graded disc and graded foundation)
   hertz_rigid_mu1, hertz_ratio_*_mu1
                             the same with --mu 1 (Coulomb friction)
   hertz_cavity_mu0, hertz_cavity_mu1
                             hertz.py --body circle --cavity [--mu 1] (the
                             circular body in the cavity R = 120 mm)
+  hertz_cavity_mu0_graded   the same as hertz_cavity_mu0 (paired with
+                            dpana's graded disc and graded cavity)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
   hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
   hertz_two_spheres, hertz_two_spheres_mu03
@@ -75,14 +83,24 @@ FAMILIES = {
     # The same GetFEM sweep, paired with dpana's graded disc.
     "hertz_ratio_1_mu0_graded": (["hertz.py", "--body", "circle", "--ratio",
                                   "1"], range(0, 4), [4]),
+    # ... and with dpana's graded disc and graded foundation.
+    "hertz_ratio_1_mu0_graded_block": (["hertz.py", "--body", "circle",
+                                        "--ratio", "1"], range(0, 4), [4]),
     "hertz_ratio_1e-3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                               "1e-3"], range(0, 4), [4]),
     "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
                              "1e3"], range(0, 4), [4]),
+    # The same GetFEM sweep, paired with dpana's graded disc and block.
+    "hertz_ratio_1e3_mu0_graded_block": (["hertz.py", "--body", "circle",
+                                          "--ratio", "1e3"], range(0, 4),
+                                         [4]),
     "hertz_rigid_mu1": (["hertz.py", "--body", "circle", "--mu", "1"],
                         range(-2, 5), [5]),
     "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
                          range(0, 4), [4]),
+    # The same GetFEM sweep, paired with dpana's graded disc and cavity.
+    "hertz_cavity_mu0_graded": (["hertz.py", "--body", "circle", "--cavity"],
+                                range(0, 4), [4]),
     "hertz_cavity_mu1": (["hertz.py", "--body", "circle", "--cavity", "--mu",
                           "1"], range(0, 4), [4]),
     "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
