@@ -2,6 +2,7 @@
 #include <dpana/linear_algebra/blas.h>
 
 #include <climits>
+#include <stdexcept>
 
 // OpenBLAS' thread count; weak, so that another system BLAS without them
 // links as well (the calls are then skipped).
@@ -67,6 +68,7 @@ namespace dpana
     {
       if (H.rows() < small)
         {
+          single = false;
           factor.resize(0, 0);
           llt.compute(H);
           ok = (llt.info() == Eigen::Success);
@@ -95,6 +97,20 @@ namespace dpana
       const ThreadsForSize threads(factor.rows());
       const int            n    = as_int(factor.rows());
       int                  info = 0;
+      single                    = factor.rows() >= single_precision_size;
+      if (single)
+        {
+          factor_single = factor.cast<float>();
+          spotrf_("L", &n, factor_single.data(), &n, &info);
+          if (info == 0)
+            {
+              factor.resize(0, 0);
+              ok = true;
+              return ok;
+            }
+          single = false;
+          factor_single.resize(0, 0);
+        }
       dpotrf_("L", &n, factor.data(), &n, &info);
       ok = (info == 0);
       return ok;
@@ -107,15 +123,22 @@ namespace dpana
     {
       if (R.size() == 0)
         return;
-      if (factor.size() == 0)
+      if (factor.size() == 0 && !single)
         {
           R = llt.solve(R);
           return;
         }
-      const ThreadsForSize threads(factor.rows());
-      const int            n = as_int(factor.rows()), k = as_int(R.cols());
+      const ThreadsForSize threads(rows());
+      const int            n = as_int(rows()), k = as_int(R.cols());
       int                  info = 0;
-      dpotrs_("L", &n, &k, factor.data(), &n, R.data(), &n, &info);
+      if (single)
+        {
+          Eigen::MatrixXf Rs = R.cast<float>();
+          spotrs_("L", &n, &k, factor_single.data(), &n, Rs.data(), &n, &info);
+          R = Rs.cast<double>();
+        }
+      else
+        dpotrs_("L", &n, &k, factor.data(), &n, R.data(), &n, &info);
     }
 
 
@@ -143,7 +166,10 @@ namespace dpana
     Eigen::MatrixXd
     DenseCholesky::inverse() const
     {
-      if (factor.size() == 0)
+      if (single)
+        throw std::logic_error(
+          "DenseCholesky::inverse() needs a factor in double precision");
+      if (factor.size() == 0 && !single)
         {
           const Eigen::Index    n = llt.matrixLLT().rows();
           const Eigen::MatrixXd X = llt.solve(Eigen::MatrixXd::Identity(n, n));
@@ -185,7 +211,7 @@ namespace dpana
     {
       if (R.size() == 0)
         return;
-      if (factor.size() == 0)
+      if (factor.size() == 0 && !single)
         {
           if (transpose)
             llt.matrixU().solveInPlace(R);
@@ -193,9 +219,27 @@ namespace dpana
             llt.matrixL().solveInPlace(R);
           return;
         }
-      const ThreadsForSize threads(factor.rows());
-      const int            n = as_int(factor.rows()), k = as_int(R.cols());
-      const double         one = 1.0;
+      const ThreadsForSize threads(rows());
+      const int            n = as_int(rows()), k = as_int(R.cols());
+      if (single)
+        {
+          const float     one = 1.0f;
+          Eigen::MatrixXf Rs  = R.cast<float>();
+          strsm_("L",
+                 "L",
+                 transpose ? "T" : "N",
+                 "N",
+                 &n,
+                 &k,
+                 &one,
+                 factor_single.data(),
+                 &n,
+                 Rs.data(),
+                 &n);
+          R = Rs.cast<double>();
+          return;
+        }
+      const double one = 1.0;
       dtrsm_("L",
              "L",
              transpose ? "T" : "N",

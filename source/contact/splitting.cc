@@ -237,13 +237,14 @@ namespace dpana
       inner_options(const SolverOptions &options)
       {
         InnerOptions inner;
-        inner.tolerance            = options.inner_tolerance;
-        inner.max_iterations       = options.inner_max_iterations;
-        inner.over_relaxation      = options.over_relaxation;
-        inner.augmentation         = options.augmentation;
-        inner.partition_sweeps     = options.partition_sweeps;
-        inner.partition_sweep_size = options.partition_sweep_size;
-        inner.complement_size      = options.normal_complement_size;
+        inner.tolerance             = options.inner_tolerance;
+        inner.max_iterations        = options.inner_max_iterations;
+        inner.over_relaxation       = options.over_relaxation;
+        inner.augmentation          = options.augmentation;
+        inner.partition_sweeps      = options.partition_sweeps;
+        inner.partition_sweep_size  = options.partition_sweep_size;
+        inner.single_precision_size = options.single_precision_size;
+        inner.complement_size       = options.normal_complement_size;
         return inner;
       }
 

@@ -17,6 +17,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 
+#include <limits>
+
 namespace dpana
 {
   namespace contact
@@ -42,7 +44,7 @@ namespace dpana
       Eigen::Index
       rows() const
       {
-        return factor.rows();
+        return single ? factor_single.rows() : factor.rows();
       }
 
       // R <- H^{-1} R.
@@ -69,6 +71,24 @@ namespace dpana
       void
       solve_upper_in_place(Eigen::MatrixXd &R) const;
 
+      // From the next compute() on, factor matrices of at least @p min_rows
+      // rows in single precision (LAPACK spotrf): solves are then accurate
+      // to about cond(H) 6e-8 relative, and inverse() is not available. A
+      // matrix that is not positive definite in single precision is factored
+      // in double.
+      void
+      set_single_precision(const Eigen::Index min_rows)
+      {
+        single_precision_size = min_rows;
+      }
+
+      // Whether the current factor is in single precision.
+      bool
+      single_precision() const
+      {
+        return single;
+      }
+
     private:
       bool
       factor_in_place();
@@ -80,7 +100,11 @@ namespace dpana
       // Below this size Eigen's LLT factors and solves.
       static constexpr Eigen::Index small = 64;
 
-      Eigen::MatrixXd             factor; // L in the lower triangle
+      Eigen::MatrixXd factor;        // L in the lower triangle
+      Eigen::MatrixXf factor_single; // ... in single precision
+      Eigen::Index    single_precision_size =
+        std::numeric_limits<Eigen::Index>::max();
+      bool                        single = false;
       Eigen::LLT<Eigen::MatrixXd> llt;
       bool                        ok = false;
     };

@@ -99,6 +99,14 @@ namespace dpana
         options.tolerance = tolerance;
       }
 
+      // Newton matrices factored in single precision so far
+      // (InnerOptions::single_precision_size).
+      unsigned int
+      single_precision_factorisations() const
+      {
+        return n_single_factorisations;
+      }
+
     private:
       // Sweeps over a matrix in double (Eigen::MatrixXd) or, for the
       // partition sweeps, single precision (Eigen::MatrixXf).
@@ -292,6 +300,20 @@ namespace dpana
       std::vector<Eigen::Index> s_index, l_index, s_start, l_start, position;
       DenseCholesky             llt_stick, llt_slip;
       Eigen::MatrixXd           P, Sigma, S_slip;
+      // Iterative refinement of a solve with single precision factors: Z x
+      // and M Z x over all tangential unknowns, H x and the residual.
+      Eigen::VectorXd z_full, Mz_full, Hx_refine, r_refine;
+      unsigned int    n_single_factorisations = 0;
+
+      // H x through M, in double.
+      void
+      apply_newton_matrix(const Eigen::VectorXd &x, Eigen::VectorXd &Hx);
+
+      // Iterative refinement of H x = rhs (two steps at most), if the factors
+      // are in single precision.
+      void
+      refine_newton_solution(const Eigen::VectorXd &rhs,
+                             Eigen::VectorXd       &solution);
     };
   } // namespace contact
 } // namespace dpana

@@ -62,6 +62,10 @@ namespace dpana
       // chord step, kept if it halves ||F||); false: every step is an exact
       // Newton step with its own factorisation.
       bool chord_steps = true;
+      // Active-set T-step only: Newton matrices of at least this many rows
+      // are factored in single precision, each solve refined in double
+      // (friction_qp.cc); 0: all of them.
+      unsigned int single_precision_size = 1024;
       // Active-set N-step only: with at least this many normal unknowns, a
       // contact set C with fewer elements outside than inside is solved
       // through H = M^{-1} (formed once, n^3 flops) and a Cholesky factor of

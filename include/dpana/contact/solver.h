@@ -97,6 +97,11 @@ namespace dpana
       // faster at 1152 and more.
       unsigned int partition_sweeps     = 200;
       unsigned int partition_sweep_size = 1000;
+      // Splitting with active-set inner solvers only: the T-step's Newton
+      // matrices of at least this many rows are factored in single
+      // precision, each solve refined in double (friction_qp.cc); the
+      // iterates, the residual and the stopping test stay in double.
+      unsigned int single_precision_size = 1024;
       // Splitting with active-set inner solvers only: N-steps of at least
       // this many normal unknowns solve a contact set that holds more than
       // half of the elements through the inverse of A_NN and the separated

@@ -65,6 +65,33 @@ extern "C"
   void
   dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 
+  /// Single precision: spotrf_, spotrs_ and strsm_ as their d versions.
+  void
+  spotrf_(const char *uplo, const int *n, float *a, const int *lda, int *info);
+
+  void
+  spotrs_(const char  *uplo,
+          const int   *n,
+          const int   *nrhs,
+          const float *a,
+          const int   *lda,
+          float       *b,
+          const int   *ldb,
+          int         *info);
+
+  void
+  strsm_(const char  *side,
+         const char  *uplo,
+         const char  *transa,
+         const char  *diag,
+         const int   *m,
+         const int   *n,
+         const float *alpha,
+         const float *a,
+         const int   *lda,
+         float       *b,
+         const int   *ldb);
+
   /// LAPACK: B <- A^-1 B with the factor of dpotrf_.
   void
   dpotrs_(const char   *uplo,

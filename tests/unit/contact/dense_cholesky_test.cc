@@ -1,7 +1,8 @@
 // The dense Cholesky factorisation of the active-set solvers
 // (dense_cholesky.h) against Eigen's LLT, an independent implementation, on
 // both sides of the size where it switches from Eigen to LAPACK; its
-// inverse; and its refusal of a matrix that is not positive definite.
+// inverse; its refusal of a matrix that is not positive definite; and its
+// single precision factors.
 #include <dpana/contact/dense_cholesky.h>
 
 #include <random>
@@ -88,4 +89,52 @@ TEST(DenseCholesky, RefusesAnIndefiniteMatrix)
       EXPECT_FALSE(chol.compute(H)) << size;
       EXPECT_FALSE(chol.valid()) << size;
     }
+}
+
+
+
+// Single precision factors (set_single_precision(64): from the LAPACK path
+// on): solves accurate to about cond(H) times the single precision epsilon
+// (here cond(H) < 50: 1e-4 is a bound with a margin of about 10), one step
+// of iterative refinement in double to about its square; the triangular
+// solves likewise; inverse() refused. A matrix that is positive definite in
+// double but singular once rounded to single precision (the 2 x 2 block
+// [1 1; 1 1 + 1e-10] in an identity) is factored in double instead.
+TEST(DenseCholesky, SinglePrecisionFactorsAndTheirFallback)
+{
+  for (const Eigen::Index size : {63, 64, 300})
+    {
+      const Eigen::MatrixXd H = random_spd(size, 29 + size);
+      const Eigen::MatrixXd R = random_spd(size, 31).leftCols(2);
+      DenseCholesky         chol;
+      chol.set_single_precision(64);
+      ASSERT_TRUE(chol.compute(H)) << size;
+      EXPECT_EQ(chol.single_precision(), size >= 64) << size;
+      const double          bound = (size >= 64) ? 1e-4 : 1e-10;
+      const Eigen::MatrixXd X     = chol.solve(R);
+      EXPECT_LE((H * X - R).norm(), bound * R.norm()) << size;
+      const Eigen::MatrixXd refined =
+        X + chol.solve(Eigen::MatrixXd(R - H * X));
+      EXPECT_LE((H * refined - R).norm(), bound * bound * R.norm() + 1e-13)
+        << size;
+      const Eigen::LLT<Eigen::MatrixXd> llt(H);
+      const Eigen::MatrixXd             L     = llt.matrixL();
+      Eigen::MatrixXd                   lower = R;
+      chol.solve_lower_in_place(lower);
+      EXPECT_LE((L * lower - R).norm(), bound * R.norm()) << size;
+      if (size >= 64)
+        EXPECT_THROW(chol.inverse(), std::logic_error);
+    }
+  Eigen::MatrixXd H = Eigen::MatrixXd::Identity(100, 100);
+  H(0, 1) = H(1, 0) = 1.0;
+  H(1, 1)           = 1.0 + 1e-10;
+  DenseCholesky chol;
+  chol.set_single_precision(64);
+  ASSERT_TRUE(chol.compute(H));
+  EXPECT_FALSE(chol.single_precision());
+  const Eigen::VectorXd r = Eigen::VectorXd::Ones(100);
+  // x = (1, 0, 1, ..., 1) exactly; the solve in double loses cond(H) eps.
+  const Eigen::VectorXd x = chol.solve(r);
+  EXPECT_NEAR(x[0], 1.0, 1e-5);
+  EXPECT_NEAR(x[1], 0.0, 1e-5);
 }

@@ -308,3 +308,98 @@ TEST(InnerSolvers, NormalActiveSetThroughSeparatedSetAgreesWithDirect)
           }
       }
 }
+
+
+
+// Newton matrices factored in single precision (InnerOptions::
+// single_precision_size = 0: every matrix of at least 64 rows, the size
+// where DenseCholesky leaves Eigen for LAPACK) against the same solver in
+// double: the natural map and the stopping test are in double, so both must
+// stop at the same minimiser (unique, M SPD) to the accuracy of the test,
+// cold and warm started (chord steps, refined against the current matrix),
+// with and without a tangential equality row. The Newton steps of the single
+// precision solver are refined in double (two steps at most), so they stay
+// close to exact ones: it may take a step or two more, not many (without the
+// refinement a step is accurate only to about cond(H) 6e-8).
+TEST(InnerSolvers, SinglePrecisionNewtonMatricesReachTheSameMinimiser)
+{
+  for (const unsigned int dim : {2u, 3u})
+    for (const unsigned int rows : {0u, 1u})
+      {
+        const unsigned int n = 200, m = dim - 1, q = m * n;
+        const FrictionSet  set(dim,
+                              dim == 2 ? ConeModel::interval : ConeModel::disc,
+                              16);
+        // Eigenvalues from 1e-4 to 1 (cond(M) = 1e4, like a compliance of
+        // 10^4 unknowns): single precision solves are then accurate to
+        // about 1e-3 only, which Newton's convergence would show.
+        const Eigen::MatrixXd Q =
+          Eigen::HouseholderQR<Eigen::MatrixXd>(random_spd(q, 23 + dim + rows))
+            .householderQ();
+        Eigen::VectorXd spectrum(q);
+        for (unsigned int i = 0; i < q; ++i)
+          spectrum[i] = std::pow(1e-4, double(i) / (q - 1));
+        const Eigen::MatrixXd M_raw = Q * spectrum.asDiagonal() * Q.transpose();
+        const Eigen::MatrixXd M     = 0.5 * (M_raw + M_raw.transpose());
+        std::mt19937          gen(17 + dim);
+        std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+        Eigen::VectorXd                        c(q), radius(n);
+        // c = -M t: the unconstrained minimiser t, of the size of the radii,
+        // so that some blocks stick and some slip.
+        Eigen::VectorXd t(q);
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            radius[j] = 0.5 + std::abs(uniform(gen));
+            for (unsigned int a = 0; a < m; ++a)
+              t[m * j + a] = 1.5 * radius[j] * uniform(gen);
+          }
+        c                 = -M * t;
+        Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, q);
+        Eigen::VectorXd e(rows);
+        if (rows > 0)
+          {
+            double sum = 0.0;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                G(0, m * j) = 1.0;
+                sum += radius[j];
+              }
+            e[0] = 0.1 * sum;
+          }
+        InnerOptions in_double;
+        in_double.tolerance             = 1e-13;
+        in_double.max_iterations        = 2000;
+        InnerOptions in_single          = in_double;
+        in_single.single_precision_size = 0;
+        FrictionQp        reference(M, G, set, in_double);
+        FrictionQp        single(M, G, set, in_single);
+        Eigen::VectorXd   T_ref = Eigen::VectorXd::Zero(q), T_single = T_ref;
+        Eigen::VectorXd   beta_ref, beta_single;
+        const InnerResult r_ref =
+          reference.solve_active_set(c, radius, e, T_ref, beta_ref);
+        const InnerResult r_single =
+          single.solve_active_set(c, radius, e, T_single, beta_single);
+        ASSERT_TRUE(r_ref.converged) << r_ref.message;
+        ASSERT_TRUE(r_single.converged) << r_single.message;
+        const std::string where =
+          "dim " + std::to_string(dim) + " rows " + std::to_string(rows);
+        EXPECT_GT(single.single_precision_factorisations(), 0u) << where;
+        EXPECT_EQ(reference.single_precision_factorisations(), 0u) << where;
+        EXPECT_LE(relative_difference(T_ref, T_single), 1e-9) << where;
+        EXPECT_LE(r_single.iterations, r_ref.iterations + 2) << where;
+        // Warm started with slightly changed data (the chord steps).
+        Eigen::VectorXd c2 = c;
+        for (unsigned int i = 0; i < q; ++i)
+          c2[i] += 1e-3 * uniform(gen);
+        const InnerResult r2_ref =
+          reference.solve_active_set(c2, radius, e, T_ref, beta_ref);
+        const InnerResult r2_single =
+          single.solve_active_set(c2, radius, e, T_single, beta_single);
+        ASSERT_TRUE(r2_ref.converged) << r2_ref.message;
+        ASSERT_TRUE(r2_single.converged) << r2_single.message;
+        EXPECT_LE(relative_difference(T_ref, T_single), 1e-9) << where;
+        EXPECT_LE(r2_single.iterations, r2_ref.iterations + 2) << where;
+        if (rows > 0)
+          EXPECT_NEAR((G * T_single - e)[0], 0.0, 1e-10 * std::abs(e[0]));
+      }
+}
