@@ -39,8 +39,9 @@ namespace dpana
      */
     struct MemoryEstimate
     {
-      /// False until estimate_memory() made it: a factorisation back end
-      /// without a symbolic analysis of its own (MUMPS) gives none.
+      /// False until it is made: by estimate_memory() from CHOLMOD's
+      /// analysis, or from MUMPS' analysis (condenser.cc, mumps_estimate:
+      /// its workspace estimate, in core or out of core).
       bool         made    = false;
       unsigned int n_dofs  = 0;
       unsigned int n_gamma = 0;
