@@ -3,6 +3,7 @@
 
 #include <climits>
 #include <stdexcept>
+#include <type_traits>
 
 // OpenBLAS' thread count; weak, so that another system BLAS without them
 // links as well (the calls are then skipped).
@@ -29,6 +30,46 @@ namespace dpana
       as_int(const Eigen::Index n)
       {
         return static_cast<int>(std::min<Eigen::Index>(n, INT_MAX));
+      }
+
+
+
+      // R <- L^{-1} R or L^{-T} R (BLAS trsm) with the lower triangle L of
+      // @p factor, in the precision of its scalars.
+      template <typename Scalar>
+      void
+      lower_triangular_solve(
+        const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> &factor,
+        const bool                                                   transpose,
+        Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>       &R)
+      {
+        const int    n = as_int(factor.rows()), k = as_int(R.cols());
+        const Scalar one   = 1;
+        const char  *trans = transpose ? "T" : "N";
+        if constexpr (std::is_same_v<Scalar, float>)
+          strsm_("L",
+                 "L",
+                 trans,
+                 "N",
+                 &n,
+                 &k,
+                 &one,
+                 factor.data(),
+                 &n,
+                 R.data(),
+                 &n);
+        else
+          dtrsm_("L",
+                 "L",
+                 trans,
+                 "N",
+                 &n,
+                 &k,
+                 &one,
+                 factor.data(),
+                 &n,
+                 R.data(),
+                 &n);
       }
 
       // OpenBLAS on one thread for the blocks below 1024 rows (restored at
@@ -123,7 +164,7 @@ namespace dpana
     {
       if (R.size() == 0)
         return;
-      if (factor.size() == 0 && !single)
+      if (uses_eigen())
         {
           R = llt.solve(R);
           return;
@@ -169,7 +210,7 @@ namespace dpana
       if (single)
         throw std::logic_error(
           "DenseCholesky::inverse() needs a factor in double precision");
-      if (factor.size() == 0 && !single)
+      if (factor.size() == 0)
         {
           const Eigen::Index    n = llt.matrixLLT().rows();
           const Eigen::MatrixXd X = llt.solve(Eigen::MatrixXd::Identity(n, n));
@@ -211,7 +252,7 @@ namespace dpana
     {
       if (R.size() == 0)
         return;
-      if (factor.size() == 0 && !single)
+      if (uses_eigen())
         {
           if (transpose)
             llt.matrixU().solveInPlace(R);
@@ -220,37 +261,14 @@ namespace dpana
           return;
         }
       const ThreadsForSize threads(rows());
-      const int            n = as_int(rows()), k = as_int(R.cols());
       if (single)
         {
-          const float     one = 1.0f;
-          Eigen::MatrixXf Rs  = R.cast<float>();
-          strsm_("L",
-                 "L",
-                 transpose ? "T" : "N",
-                 "N",
-                 &n,
-                 &k,
-                 &one,
-                 factor_single.data(),
-                 &n,
-                 Rs.data(),
-                 &n);
+          Eigen::MatrixXf Rs = R.cast<float>();
+          lower_triangular_solve(factor_single, transpose, Rs);
           R = Rs.cast<double>();
-          return;
         }
-      const double one = 1.0;
-      dtrsm_("L",
-             "L",
-             transpose ? "T" : "N",
-             "N",
-             &n,
-             &k,
-             &one,
-             factor.data(),
-             &n,
-             R.data(),
-             &n);
+      else
+        lower_triangular_solve(factor, transpose, R);
     }
   } // namespace contact
 } // namespace dpana

@@ -427,10 +427,7 @@ namespace dpana
                 return "friction active set: Newton matrix not positive "
                        "definite";
               factored_directions = f;
-              n_single_factorisations +=
-                (blocked ?
-                   llt_slip.single_precision() || llt_stick.single_precision() :
-                   llt.single_precision());
+              n_single_factorisations += factors_in_single_precision();
             }
           x = solve_newton_matrix(g);
           refine_newton_solution(g, x);
@@ -486,7 +483,7 @@ namespace dpana
           double           h   = 0.0;
           for (unsigned int t = 0; t < m; ++t)
             h += dir.v[t] * Mz_full[m * dir.block + t];
-          Hx[a] = h + (1.0 - dir.lambda) / (dir.lambda * rho[dir.block]) * x[a];
+          Hx[a] = h + kappa(dir) * x[a];
         }
     }
 
@@ -496,8 +493,7 @@ namespace dpana
     FrictionQp::refine_newton_solution(const Eigen::VectorXd &rhs,
                                        Eigen::VectorXd       &solution)
     {
-      if (!(llt.single_precision() || llt_stick.single_precision() ||
-            llt_slip.single_precision()))
+      if (!factors_in_single_precision())
         return;
       for (unsigned int step = 0; step < 2; ++step)
         {

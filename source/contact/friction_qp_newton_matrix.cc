@@ -94,7 +94,7 @@ namespace dpana
               H(a, b) = h;
             }
           const Direction &dir = directions[b];
-          H(b, b) += (1.0 - dir.lambda) / (dir.lambda * rho[dir.block]);
+          H(b, b) += kappa(dir);
         }
       return llt.compute(std::move(H));
     }
@@ -197,8 +197,7 @@ namespace dpana
                   s += da.v[t] * Sigma(la + t, lb + u) * db.v[u];
               S_slip(position[a], position[b]) = s;
             }
-          S_slip(position[b], position[b]) +=
-            (1.0 - db.lambda) / (db.lambda * rho[db.block]);
+          S_slip(position[b], position[b]) += kappa(db);
         }
       if (nr > 0)
         {

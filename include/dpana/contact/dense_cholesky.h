@@ -93,6 +93,13 @@ namespace dpana
       bool
       factor_in_place();
 
+      // Whether Eigen's LLT holds the factor (below #small rows).
+      bool
+      uses_eigen() const
+      {
+        return factor.size() == 0 && !single;
+      }
+
       // R <- L^{-1} R, or L^{-T} R if transpose.
       void
       triangular_solve(Eigen::MatrixXd &R, bool transpose) const;

@@ -276,7 +276,15 @@ namespace dpana
         unsigned int axis;
       };
       std::vector<Direction> directions;
-      std::vector<char>      partition, previous_partition;
+
+      // The diagonal term (1 - lambda) / (lambda rho_j) of H for a direction.
+      double
+      kappa(const Direction &dir) const
+      {
+        return (1.0 - dir.lambda) / (dir.lambda * rho[dir.block]);
+      }
+
+      std::vector<char> partition, previous_partition;
       // y, the regions and the radii of the last Newton step (predictor).
       Eigen::VectorXd  y_last, radius_last;
       std::vector<int> region_last;
@@ -304,6 +312,16 @@ namespace dpana
       // and M Z x over all tangential unknowns, H x and the residual.
       Eigen::VectorXd z_full, Mz_full, Hx_refine, r_refine;
       unsigned int    n_single_factorisations = 0;
+
+      // Whether the factors solve_newton_matrix() uses are in single
+      // precision.
+      bool
+      factors_in_single_precision() const
+      {
+        return blocked ?
+                 llt_stick.single_precision() || llt_slip.single_precision() :
+                 llt.single_precision();
+      }
 
       // H x through M, in double.
       void
