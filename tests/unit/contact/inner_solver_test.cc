@@ -31,6 +31,29 @@ namespace
       B * B.transpose() / size + 0.05 * Eigen::MatrixXd::Identity(size, size);
     return 0.5 * (M + M.transpose());
   }
+
+
+
+  // With one row in G (and e): the sum of the first tangential components
+  // (a rigid tangential mode) set to a tenth of its value at T = radius,
+  // a feasible equality row. Nothing with none.
+  void
+  tangential_equality_row(const unsigned int     m,
+                          const Eigen::VectorXd &radius,
+                          Eigen::MatrixXd       &G,
+                          Eigen::VectorXd       &e)
+  {
+    if (G.rows() == 0)
+      return;
+    G.setZero();
+    double sum = 0.0;
+    for (Eigen::Index j = 0; j < radius.size(); ++j)
+      {
+        G(0, m * j) = 1.0;
+        sum += radius[j];
+      }
+    e[0] = 0.1 * sum;
+  }
 } // namespace
 
 
@@ -126,19 +149,7 @@ TEST(InnerSolvers, FrictionQpActiveSetAgreesWithPgs)
           radius[j] = (j % 7 == 0) ? 0.0 : 0.2 + 0.5 * std::abs(uniform(gen));
         Eigen::MatrixXd G(rows, q);
         Eigen::VectorXd e(rows);
-        if (rows > 0)
-          {
-            // Sum of the first tangential components (a rigid tangential
-            // mode), equal to half its value at T = radius (feasible).
-            G.setZero();
-            double sum = 0.0;
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                G(0, m * j) = 1.0;
-                sum += radius[j];
-              }
-            e[0] = 0.1 * sum;
-          }
+        tangential_equality_row(m, radius, G, e);
         InnerOptions options;
         options.tolerance      = 1e-13;
         options.max_iterations = 200000;
@@ -353,19 +364,10 @@ TEST(InnerSolvers, SinglePrecisionNewtonMatricesReachTheSameMinimiser)
             for (unsigned int a = 0; a < m; ++a)
               t[m * j + a] = 1.5 * radius[j] * uniform(gen);
           }
-        c                 = -M * t;
-        Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, q);
+        c = -M * t;
+        Eigen::MatrixXd G(rows, q);
         Eigen::VectorXd e(rows);
-        if (rows > 0)
-          {
-            double sum = 0.0;
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                G(0, m * j) = 1.0;
-                sum += radius[j];
-              }
-            e[0] = 0.1 * sum;
-          }
+        tangential_equality_row(m, radius, G, e);
         InnerOptions in_double;
         in_double.tolerance             = 1e-13;
         in_double.max_iterations        = 2000;
