@@ -311,6 +311,8 @@ namespace dpana
       // A body partitioned over the ranks holds its share of K on each.
       mumps->set_matrix_in_shares(mpi && body.n_parts() > 1);
       mumps->set_out_of_core_directory(parameters.out_of_core_directory);
+      if (!parameters.mumps_orders_itself)
+        mumps->set_ordering(parameters.ordering);
       mumps->set_analysis_check(
         [this, communicator](
           const linear_algebra::MumpsSchurFactorization::Statistics &s) {

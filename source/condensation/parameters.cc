@@ -53,14 +53,17 @@ namespace dpana
         "Schur ordering",
         "interior nested dissection",
         dealii::Patterns::Selection(
-          "interior nested dissection|constrained AMD|moved last"),
+          "interior nested dissection|constrained AMD|moved last|by MUMPS"),
         "The fill-reducing ordering of the factorisation of the Schur route, "
         "the surface dofs last: 'interior nested dissection' (METIS on the "
         "graph of the other dofs), 'constrained AMD' (CAMD on the whole "
         "graph, the surface a second constraint set) or 'moved last' "
         "(CHOLMOD's ordering of the whole matrix, the surface dofs moved to "
-        "the end). The result is the same up to round-off; the time and "
-        "memory of the factorisation differ (benchmarks/condensation).");
+        "the end). The MUMPS back end is given the same ordering on one "
+        "process; 'by MUMPS' lets MUMPS order (AMD when it computes a Schur "
+        "complement), as it always does on several ranks. The result is the "
+        "same up to round-off; the time and memory of the factorisation "
+        "differ (benchmarks/condensation).");
       prm.declare_entry("Memory limit (GB)",
                         "0",
                         dealii::Patterns::Double(0),
@@ -154,6 +157,10 @@ namespace dpana
         check_out_of_core_directory(out_of_core_directory, backend);
       memory_limit_gb        = prm.get_double("Memory limit (GB)");
       const std::string name = prm.get("Schur ordering");
+      mumps_orders_itself    = name == "by MUMPS";
+      if (mumps_orders_itself && backend != Backend::mumps)
+        throw InputError("Contact / Schur ordering = by MUMPS needs Contact / "
+                         "Factorisation back end = mumps (or the MPI route)");
       for (const auto o :
            {linear_algebra::LastBlockOrdering::moved_last,
             linear_algebra::LastBlockOrdering::constrained_amd,

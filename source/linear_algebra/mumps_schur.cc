@@ -34,24 +34,28 @@ namespace dpana
         return infog_value < 0 ? -1000000L * infog_value : infog_value;
       }
 
+      // @p infog and @p rinfog read MUMPS' INFOG(i) and RINFOG(i).
+      template <typename Infog, typename Rinfog>
       MumpsSchurFactorization::Statistics
-      statistics_of(const Mat F, const unsigned int schur_size)
+      statistics_from(const bool         out_of_core,
+                      const Infog       &infog,
+                      const Rinfog      &rinfog,
+                      const unsigned int schur_size)
       {
-        PetscInt ooc = 0;
-        MatMumpsGetIcntl(F, 22, &ooc);
         MumpsSchurFactorization::Statistics s;
-        s.out_of_core              = ooc == 1;
-        s.estimated_ooc_max_mb     = infog(F, 26);
-        s.estimated_ooc_total_mb   = infog(F, 27);
-        s.estimated_flops          = parallel::rinfog(F, 1);
-        s.flops                    = parallel::rinfog(F, 3);
-        s.estimated_max_mb         = infog(F, 16);
-        s.estimated_total_mb       = infog(F, 17);
-        s.estimated_factor_entries = entries(infog(F, 20));
-        s.used_max_mb              = infog(F, 21);
-        s.used_total_mb            = infog(F, 22);
-        s.factor_entries           = entries(infog(F, 29));
+        s.out_of_core              = out_of_core;
+        s.estimated_ooc_max_mb     = infog(26);
+        s.estimated_ooc_total_mb   = infog(27);
+        s.estimated_flops          = rinfog(1);
+        s.flops                    = rinfog(3);
+        s.estimated_max_mb         = infog(16);
+        s.estimated_total_mb       = infog(17);
+        s.estimated_factor_entries = entries(infog(20));
+        s.used_max_mb              = infog(21);
+        s.used_total_mb            = infog(22);
+        s.factor_entries           = entries(infog(29));
         s.schur_size               = schur_size;
+        s.ordering                 = infog(7);
         return s;
       }
     } // namespace
@@ -59,6 +63,27 @@ namespace dpana
 
 
     // The private state: mumps_schur_impl.h.
+
+
+
+    // What MUMPS reports, from the direct instance or through PETSc.
+    MumpsSchurFactorization::Statistics
+    MumpsSchurFactorization::Impl::statistics() const
+    {
+      if (direct)
+        return statistics_from(
+          direct->icntl(22) == 1,
+          [this](const int i) { return direct->infog(i); },
+          [this](const int i) { return direct->rinfog(i); },
+          gamma.size());
+      PetscInt ooc = 0;
+      MatMumpsGetIcntl(F, 22, &ooc);
+      return statistics_from(
+        ooc == 1,
+        [this](const int i) { return infog(F, i); },
+        [this](const int i) { return parallel::rinfog(F, i); },
+        gamma.size());
+    }
 
 
 
@@ -142,12 +167,20 @@ namespace dpana
               std::to_string(free.size()) +
               " unknowns: it is not positive definite; a stiffness matrix is "
               "singular when the body is not held against rigid motions");
-          MatMumpsGetIcntl(F, 14, &relaxation);
+          if (direct)
+            relaxation = direct->icntl(14);
+          else
+            MatMumpsGetIcntl(F, 14, &relaxation);
           relaxation = 2 * std::max<PetscInt>(relaxation, 20);
-          MatDestroy(&F);
+          destroy_factor();
         }
-      // Later solves with F are solves with K_II only.
-      check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+      // Later solves with F are solves with K_II only (the direct instance
+      // sets this for each solve).
+      if (!direct)
+        check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
+      std::vector<PetscInt>().swap(csr_start);
+      std::vector<PetscInt>().swap(csr_columns);
+      std::vector<PetscScalar>().swap(csr_values);
     }
 
 
@@ -158,6 +191,8 @@ namespace dpana
     PetscInt
     MumpsSchurFactorization::Impl::try_factor(const PetscInt relaxation)
     {
+      if (calls_mumps_directly())
+        return try_factor_directly(relaxation);
       check(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F),
             "MatGetFactor(MATSOLVERMUMPS)");
       if (F == nullptr)
@@ -200,7 +235,7 @@ namespace dpana
         PetscOptionsClearValue(nullptr, "-mat_mumps_ooc_tmpdir");
       check(symbolic, "MatCholeskyFactorSymbolic");
       if (analysis_check)
-        analysis_check(statistics_of(F, gamma.size()));
+        analysis_check(statistics());
       const PetscErrorCode code  = MatCholeskyFactorNumeric(F, K, &info);
       MatFactorError       error = MAT_FACTOR_NOERROR;
       MatFactorGetError(F, &error);
@@ -227,31 +262,16 @@ namespace dpana
       L.resize(rank == 0 ? n : 0, rank == 0 ? n : 0);
       if (n == 0)
         return;
-      Mat                  S;
-      MatFactorSchurStatus status;
-      check(MatFactorGetSchurComplement(F, &S, &status),
-            "MatFactorGetSchurComplement");
+      if (direct)
+        L = direct->take_schur_complement();
+      else
+        copy_schur_complement();
       dealii::types::blas_int info = 0;
       if (rank == 0)
         {
-          const PetscScalar *values;
-          PetscInt           lda = 0;
-          check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
-          check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
-          for (dealii::types::blas_int j = 0; j < n; ++j)
-            for (dealii::types::blas_int i = 0; i < n; ++i)
-              L(i, j) = values[i + j * lda];
-          MatDenseRestoreArrayRead(S, &values);
-          // The triangle that holds S: on one process the lower one; on
-          // several MUMPS returns the lower triangle by rows, which the
-          // column-major array holds as its upper one (the rest of the
-          // array is not set).
-          if (rows.counts.size() > 1)
-            L = L.transpose().eval();
           L.triangularView<Eigen::StrictlyUpper>().setZero();
           dealii::potrf("L", &n, L.data(), &n, &info);
         }
-      MatFactorRestoreSchurComplement(F, &S, status);
       MPI_Bcast(&info, 1, MPI_INT, 0, communicator);
       if (info != 0)
         throw NotPositiveDefiniteError(
@@ -263,10 +283,42 @@ namespace dpana
 
 
 
+    // S from PETSc into L, its lower triangle: on one process MUMPS returns
+    // the lower one; on several the lower triangle by rows, which the
+    // column-major array holds as its upper one (the rest of the array is
+    // not set).
+    void
+    MumpsSchurFactorization::Impl::copy_schur_complement()
+    {
+      const dealii::types::blas_int n = gamma.size();
+      Mat                           S;
+      MatFactorSchurStatus          status;
+      check(MatFactorGetSchurComplement(F, &S, &status),
+            "MatFactorGetSchurComplement");
+      if (rank == 0)
+        {
+          const PetscScalar *values;
+          PetscInt           lda = 0;
+          check(MatDenseGetLDA(S, &lda), "MatDenseGetLDA");
+          check(MatDenseGetArrayRead(S, &values), "MatDenseGetArrayRead");
+          for (dealii::types::blas_int j = 0; j < n; ++j)
+            for (dealii::types::blas_int i = 0; i < n; ++i)
+              L(i, j) = values[i + j * lda];
+          MatDenseRestoreArrayRead(S, &values);
+          if (rows.counts.size() > 1)
+            L = L.transpose().eval();
+        }
+      MatFactorRestoreSchurComplement(F, &S, status);
+    }
+
+
+
     Eigen::VectorXd
     MumpsSchurFactorization::Impl::solve_interior(
       const Eigen::VectorXd &b) const
     {
+      if (direct)
+        return direct->solve_interior(b);
       Eigen::VectorXd y = parallel::apply(MatSolve, F, rows, b, "MatSolve");
       for (const PetscInt k : gamma)
         y(k) = 0.0;
@@ -363,7 +415,7 @@ namespace dpana
     Eigen::VectorXd
     MumpsSchurFactorization::solve_reduced(const Eigen::VectorXd &b) const
     {
-      AssertThrow(impl->F != nullptr,
+      AssertThrow(impl->F != nullptr || impl->direct != nullptr,
                   dealii::ExcMessage(
                     "MumpsSchurFactorization: factorize() first."));
       const QuietPetsc quiet;
@@ -447,7 +499,7 @@ namespace dpana
     int
     MumpsSchurFactorization::ordering() const
     {
-      return infog(impl->F, 7);
+      return impl->direct ? impl->direct->infog(7) : infog(impl->F, 7);
     }
 
 
@@ -455,7 +507,7 @@ namespace dpana
     int
     MumpsSchurFactorization::factor_memory_mb() const
     {
-      return infog(impl->F, 22);
+      return impl->direct ? impl->direct->infog(22) : infog(impl->F, 22);
     }
 
 
@@ -497,7 +549,16 @@ namespace dpana
     MumpsSchurFactorization::Statistics
     MumpsSchurFactorization::statistics() const
     {
-      return statistics_of(impl->F, impl->gamma.size());
+      return impl->statistics();
+    }
+
+
+
+    void
+    MumpsSchurFactorization::set_ordering(
+      const std::optional<LastBlockOrdering> &ordering)
+    {
+      impl->given_ordering = ordering;
     }
 
 
@@ -505,8 +566,12 @@ namespace dpana
     std::string
     MumpsSchurFactorization::Statistics::describe() const
     {
+      const char *const orderings[] = {
+        "AMD", "given", "AMF", "SCOTCH", "PORD", "METIS", "QAMD"};
       const auto gflops = std::to_string(flops / 1e9);
-      return gflops.substr(0, gflops.find('.') + 3) +
+      return std::string("ordering ") +
+             (ordering >= 0 && ordering <= 6 ? orderings[ordering] : "?") +
+             ", " + gflops.substr(0, gflops.find('.') + 3) +
              " Gflop, memory estimated " + std::to_string(estimated_total_mb) +
              " MB (at most " + std::to_string(estimated_max_mb) +
              " MB on one rank), used " + std::to_string(used_total_mb) +

@@ -6,14 +6,20 @@
 
 // The private state of MumpsSchurFactorization, shared by its two source
 // files: mumps_matrix.cc (the matrix K_r handed to PETSc, whole or in
-// shares) and mumps_schur.cc (the factorisation, S and the solves).
+// shares) and mumps_schur.cc (the factorisation, S and the solves). With a
+// given ordering on one process MUMPS is called directly (mumps_direct.h);
+// K_r is then handed to PETSc as well, for the products with it.
 
 #include <dpana/linear_algebra/mumps_schur.h>
 #include <dpana/parallel/petsc_calls.h>
 
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "mumps_direct.h"
 
 namespace dpana
 {
@@ -25,13 +31,17 @@ namespace dpana
         : communicator(communicator)
       {
         MPI_Comm_rank(communicator, &rank);
+        MPI_Comm_size(communicator, &n_ranks);
       }
 
       MPI_Comm                                communicator;
       std::function<void(const Statistics &)> analysis_check;
       bool                                    in_shares = false;
       std::string                             out_of_core_directory;
-      int                                     rank = 0;
+      int                                     rank    = 0;
+      int                                     n_ranks = 1;
+      std::optional<LastBlockOrdering>        given_ordering;
+      std::unique_ptr<DirectMumps>            direct;
       parallel::RowRange                      rows;
       Mat                                     K = nullptr;
       Mat                                     F = nullptr;
@@ -43,11 +53,23 @@ namespace dpana
       std::vector<unsigned int>         schur;
       Eigen::MatrixXd                   L;
 
+      // The upper triangle of K_r in compressed rows, kept by
+      // create_matrix() for the direct analysis and released after it.
+      std::vector<PetscInt>    csr_start, csr_columns;
+      std::vector<PetscScalar> csr_values;
+
+      // Whether MUMPS is called directly: an ordering is given, and the
+      // whole matrix is on this one process.
+      bool
+      calls_mumps_directly() const
+      {
+        return given_ordering.has_value() && n_ranks == 1 && !in_shares;
+      }
+
       void
       destroy()
       {
-        if (F)
-          MatDestroy(&F);
+        destroy_factor();
         if (K)
           MatDestroy(&K);
       }
@@ -69,8 +91,23 @@ namespace dpana
       factor_interior();
       PetscInt
       try_factor(const PetscInt relaxation);
+      PetscInt
+      try_factor_directly(const PetscInt relaxation);
+      std::vector<long>
+      elimination_order() const;
       void
       factor_schur_complement();
+      void
+      copy_schur_complement();
+      void
+      destroy_factor()
+      {
+        direct.reset();
+        if (F)
+          MatDestroy(&F);
+      }
+      Statistics
+      statistics() const;
 
       // y = K_II^{-1} b_I, zero on Gamma.
       Eigen::VectorXd

@@ -76,6 +76,12 @@ namespace dpana
       linear_algebra::LastBlockOrdering ordering =
         linear_algebra::LastBlockOrdering::interior_nested_dissection;
       /**
+       * Whether MUMPS orders the unknowns itself (`Schur ordering = by
+       * MUMPS`, Backend::mumps only) instead of being given #ordering; on
+       * more than one rank it always does (MumpsSchurFactorization).
+       */
+      bool mumps_orders_itself = false;
+      /**
        * The memory a run may use, in GB; 0: what the machine has (the
        * resident memory of the run plus MemAvailable of /proc/meminfo).
        * A condensation whose estimate (memory_estimate.h) exceeds it is

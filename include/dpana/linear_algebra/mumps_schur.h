@@ -4,10 +4,12 @@
 #ifndef dpana_linear_algebra_mumps_schur_h
 #define dpana_linear_algebra_mumps_schur_h
 
+#include <dpana/linear_algebra/last_block_ordering.h>
 #include <dpana/linear_algebra/schur_factorization.h>
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <mpi.h>
@@ -29,11 +31,26 @@ namespace dpana
      * by MUMPS' $LL^T$ (MatGetFactor with MATSOLVERMUMPS,
      * MAT_FACTOR_CHOLESKY) with the unknowns of $\Gamma$ as the Schur
      * index set (MatFactorSetSchurIS, MUMPS' ICNTL(19)): MUMPS eliminates
-     * the interior unknowns $I$ with its own fill-reducing ordering and
+     * the interior unknowns $I$ with a fill-reducing ordering (below) and
      * returns the dense Schur complement
      * $S = K_{\Gamma\Gamma} - K_{\Gamma I} K_{II}^{-1} K_{I\Gamma}$.
      * Its dense Cholesky factor $S = L_S L_S^T$ (LAPACK potrf) then serves
      * solve_schur_factor() (LAPACK trtrs).
+     *
+     * <h3>Ordering</h3>
+     *
+     * Asked for a Schur complement, the MUMPS of Debian 12 (5.5, built
+     * without METIS and SCOTCH) orders the interior by approximate minimum
+     * degree, whose fronts and flops grow much faster than those of a
+     * nested dissection on 3D meshes (doc/parallel.md). PETSc cannot hand
+     * MUMPS an ordering for a Cholesky factorisation. After set_ordering()
+     * with an ordering, a factorisation on one process therefore calls
+     * MUMPS through its own C interface (dmumps_c, MPI_COMM_SELF) with the
+     * ordering of SparseCholesky (order_last_block(), $\Gamma$ last) as
+     * its user ordering (ICNTL(7) = 1, which MUMPS keeps with a Schur
+     * complement): the same Schur complement, interior solves and out-of-
+     * core factor, the matrix still handed to PETSc for the products with
+     * it. On several ranks MUMPS orders by itself.
      *
      * <h3>Solves</h3>
      *
@@ -150,8 +167,8 @@ namespace dpana
 
       /**
        * The ordering of the interior unknowns MUMPS used (its INFOG(7):
-       * 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD), and the memory
-       * its factorisation used, in MB (INFOG(22)).
+       * 0 AMD, 1 given, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD), and the
+       * memory its factorisation used, in MB (INFOG(22)).
        */
       int
       ordering() const;
@@ -171,8 +188,9 @@ namespace dpana
        * estimated (INFOG(16): the largest of one rank, INFOG(17): the sum
        * over the ranks, in MB) and that the factorisation used (INFOG(21),
        * INFOG(22)), the entries of the factors its analysis estimated
-       * (INFOG(20)) and that it made (INFOG(29)), and the order of the
-       * Schur complement. The inputs of the cost model of
+       * (INFOG(20)) and that it made (INFOG(29)), the order of the
+       * Schur complement, and the ordering MUMPS used (INFOG(7), as
+       * ordering() returns it). The inputs of the cost model of
        * benchmarks/parallel. After the analysis only the estimates and
        * the order are set (the others are 0 or -1). Out of core, the
        * memory the analysis estimated for an out-of-core factorisation
@@ -192,6 +210,7 @@ namespace dpana
         long         estimated_factor_entries = 0;
         long         factor_entries           = 0;
         unsigned int schur_size               = 0;
+        int          ordering                 = -1;
 
         /**
          * One line for the log.
@@ -228,6 +247,14 @@ namespace dpana
        */
       void
       set_out_of_core_directory(const std::string &directory);
+
+      /**
+       * The ordering of the unknowns handed to MUMPS on one process (see
+       * the class documentation), from the next factorize() on; none (the
+       * default): MUMPS' own.
+       */
+      void
+      set_ordering(const std::optional<LastBlockOrdering> &ordering);
 
     private:
       /**

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -29,8 +30,8 @@ namespace
   using linear_algebra::LastBlockOrdering;
 
   // Body b of an assembled scene with a contact surface, condensed anew by
-  // the given method and back end (and, for CHOLMOD's Schur route, the
-  // ordering of its factorisation).
+  // the given method and back end (and, for the Schur route, the ordering
+  // of its factorisation; none: MUMPS orders by itself).
   template <int dim>
   std::unique_ptr<condensation::Condenser<dim>>
   condensed(
@@ -38,13 +39,15 @@ namespace
     const unsigned int          b,
     const condensation::Method  method,
     const condensation::Backend backend = condensation::Backend::cholmod,
-    const LastBlockOrdering     ordering =
+    const std::optional<LastBlockOrdering> &ordering =
       LastBlockOrdering::interior_nested_dissection)
   {
     condensation::Parameters parameters;
-    parameters.method   = method;
-    parameters.backend  = backend;
-    parameters.ordering = ordering;
+    parameters.method              = method;
+    parameters.backend             = backend;
+    parameters.mumps_orders_itself = !ordering.has_value();
+    if (ordering)
+      parameters.ordering = *ordering;
     auto c = std::make_unique<condensation::Condenser<dim>>(s.body(b),
                                                             s.surface(b),
                                                             parameters);
@@ -63,8 +66,9 @@ namespace
   // solve with the factor of the Schur complement), by the back end
   // @p backend, and a second condensation (@p other_method by
   // @p other_backend) give the same A, s_o, G and e up to round-off (1e-12
-  // relative), for every body of the scene and, with CHOLMOD, every
-  // ordering of the Schur route's factorisation, and the same recovered
+  // relative), for every body of the scene and every ordering of the Schur
+  // route's factorisation (with MUMPS also its own, AMD, and the ordering
+  // MUMPS reports having used: 1 for a given one), and the same recovered
   // displacement.
   template <int dim>
   void
@@ -75,18 +79,27 @@ namespace
   {
     s.assemble();
     s.build_contact_surface();
-    std::vector<LastBlockOrdering> orderings = {
+    std::vector<std::optional<LastBlockOrdering>> orderings = {
+      LastBlockOrdering::moved_last,
+      LastBlockOrdering::constrained_amd,
       LastBlockOrdering::interior_nested_dissection};
-    if (backend == Backend::cholmod)
-      orderings = {LastBlockOrdering::moved_last,
-                   LastBlockOrdering::constrained_amd,
-                   LastBlockOrdering::interior_nested_dissection};
+    if (backend == Backend::mumps)
+      orderings.push_back(std::nullopt);
     for (unsigned int b = 0; b < s.n_bodies(); ++b)
-      for (const auto ordering : orderings)
+      for (const auto &ordering : orderings)
         {
-          SCOPED_TRACE(linear_algebra::to_string(ordering));
+          SCOPED_TRACE(ordering ? linear_algebra::to_string(*ordering) :
+                                  "by MUMPS");
           const auto schur = condensed(s, b, Method::schur, backend, ordering);
           const auto other = condensed(s, b, other_method, other_backend);
+          if (backend == Backend::mumps)
+            {
+              EXPECT_EQ(
+                dynamic_cast<const linear_algebra::MumpsSchurFactorization &>(
+                  schur->schur_factorization())
+                  .ordering(),
+                ordering ? 1 : 0);
+            }
           const auto relative = [](const auto &x, const auto &y) {
             return y.norm() > 0 ? (x - y).norm() / y.norm() : x.norm();
           };
@@ -310,29 +323,34 @@ TEST(Condensation, MumpsRefusesAMatrixThatIsNotPositiveDefinite)
   dealii::SparseMatrix<double> K(body.system_matrix().get_sparsity_pattern());
   K.copy_from(body.system_matrix());
   K *= -1.0;
-  linear_algebra::MumpsSchurFactorization factor;
-  EXPECT_THROW(factor.factorize(K, body.constraints(), {}),
-               linear_algebra::NotPositiveDefiniteError);
-  EXPECT_NO_THROW(
-    factor.factorize(body.system_matrix(), body.constraints(), {}));
-  EXPECT_TRUE(factor.schur_dofs().empty());
+  // MUMPS' own ordering (through PETSc), then a given one (MUMPS called
+  // directly).
+  for (const bool given : {false, true})
+    {
+      linear_algebra::MumpsSchurFactorization factor;
+      if (given)
+        factor.set_ordering(LastBlockOrdering::interior_nested_dissection);
+      EXPECT_THROW(factor.factorize(K, body.constraints(), {}),
+                   linear_algebra::NotPositiveDefiniteError);
+      EXPECT_NO_THROW(
+        factor.factorize(body.system_matrix(), body.constraints(), {}));
+      EXPECT_TRUE(factor.schur_dofs().empty());
+      EXPECT_EQ(factor.ordering() == 1, given);
+    }
 }
 
 
 
-// MUMPS' analysis is handed to set_analysis_check() before the numerical
-// factorisation: a check that throws stops factorize() with its exception,
-// and the estimates it saw (flops RINFOG(1), factor entries INFOG(20)) are
-// those the factorisation then makes (RINFOG(3), INFOG(29)): no pivot of a
-// positive definite matrix is delayed. On the held 3D foundation.
-TEST(Condensation, MumpsAnalysisCheckComesBeforeTheFactorisation)
+// The check of MumpsAnalysisCheckComesBeforeTheFactorisation on the
+// matrix of @p body.
+template <int dim>
+void
+expect_analysis_check_before_factorisation(
+  const dpana::Body<dim>                  &body,
+  linear_algebra::MumpsSchurFactorization &factor)
 {
   using Statistics = linear_algebra::MumpsSchurFactorization::Statistics;
-  auto s           = block_3d(true);
-  s->assemble();
-  const auto                             &body = s->body(1);
-  linear_algebra::MumpsSchurFactorization factor;
-  Statistics                              seen;
+  Statistics seen;
   factor.set_analysis_check([&seen](const Statistics &analysis) {
     seen = analysis;
     throw std::runtime_error("refused after the analysis");
@@ -350,6 +368,27 @@ TEST(Condensation, MumpsAnalysisCheckComesBeforeTheFactorisation)
   EXPECT_NEAR(made.flops / seen.estimated_flops, 1.0, 1e-6);
   EXPECT_EQ(made.factor_entries, seen.estimated_factor_entries);
   EXPECT_GT(made.used_total_mb, 0);
+}
+
+
+
+// MUMPS' analysis is handed to set_analysis_check() before the numerical
+// factorisation: a check that throws stops factorize() with its exception,
+// and the estimates it saw (flops RINFOG(1), factor entries INFOG(20)) are
+// those the factorisation then makes (RINFOG(3), INFOG(29)): no pivot of a
+// positive definite matrix is delayed. On the held 3D foundation.
+TEST(Condensation, MumpsAnalysisCheckComesBeforeTheFactorisation)
+{
+  auto s = block_3d(true);
+  s->assemble();
+  for (const bool given : {false, true})
+    {
+      SCOPED_TRACE(given ? "given ordering" : "MUMPS' ordering");
+      linear_algebra::MumpsSchurFactorization factor;
+      if (given)
+        factor.set_ordering(LastBlockOrdering::interior_nested_dissection);
+      expect_analysis_check_before_factorisation(s->body(1), factor);
+    }
 }
 
 
