@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <set>
 #include <sstream>
 
 namespace dpana
@@ -317,6 +318,18 @@ namespace dpana
         << opts.body << " in " << elements.size() << " contact elements, s in ["
         << smin << ", " << smax << "]";
       return s.str();
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    ContactSurface<dim>::n_vertices() const
+    {
+      std::set<unsigned int> vertices;
+      for (const auto &f : faces)
+        vertices.insert(f.vertices.begin(), f.vertices.end());
+      return vertices.size();
     }
 
 

@@ -49,7 +49,10 @@ namespace dpana
                         "Number of faces grouped into one contact element "
                         "carrying constant tractions. 0: 2 edges in 2D, 8 "
                         "triangles (a 2 x 2 patch of split quadrilaterals) "
-                        "in 3D.");
+                        "in 3D. In 3D take at least 2: one triangle per "
+                        "element gives about twice as many elements as "
+                        "surface vertices, and A is then singular (the log "
+                        "warns).");
       prm.declare_entry("Contact direction",
                         "",
                         Anything(),

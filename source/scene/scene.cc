@@ -215,8 +215,18 @@ namespace dpana
       }
       if (!quiet)
         for (const auto &s : surfaces)
-          std::cout << "        Candidate contact surface: " << s->description()
-                    << std::endl;
+          {
+            std::cout << "        Candidate contact surface: "
+                      << s->description() << std::endl;
+            if (s->n_elements() > s->n_vertices())
+              std::cout << "        warning: " << s->n_elements()
+                        << " contact elements on " << s->n_vertices()
+                        << " surface vertices: more normal tractions than "
+                           "the surface can resist; A is singular and the "
+                           "tractions may oscillate (raise Contact / Faces "
+                           "per contact element)"
+                        << std::endl;
+          }
     }
 
 

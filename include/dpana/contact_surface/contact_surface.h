@@ -268,6 +268,17 @@ namespace dpana
       sorted_elements() const;
 
       /**
+       * The number of distinct mesh vertices of the candidate faces. With
+       * more contact elements than vertices (one triangle per element on a
+       * triangulated surface: about twice as many), the piecewise constant
+       * normal tractions outnumber the surface displacements that resist
+       * them: A_NN is singular and the tractions may oscillate from element
+       * to element (Scene warns).
+       */
+      unsigned int
+      n_vertices() const;
+
+      /**
        * A one-line description for the log.
        */
       std::string

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene_test_tools.h"
 #include <gtest/gtest.h>
@@ -101,6 +103,24 @@ TEST(ContactSurface, StructuredPatchesOfEightTriangles)
                     e.tangents[1],
                   1.0,
                   1e-12);
+    }
+}
+
+
+
+// The vertices of the candidate faces: the 5 x 3 of the base. One triangle
+// per element gives 16 elements, more than the vertices (Scene warns), two
+// give 8.
+TEST(ContactSurface, VerticesAgainstElements)
+{
+  for (const auto &[faces, elements] :
+       std::vector<std::pair<std::string, unsigned int>>{{"1", 16u}, {"2", 8u}})
+    {
+      auto s = make_scene<3>(box_prm(faces));
+      s->assemble();
+      s->build_contact_surface();
+      EXPECT_EQ(s->surface(0).n_vertices(), 15u);
+      EXPECT_EQ(s->surface(0).n_elements(), elements);
     }
 }
 
