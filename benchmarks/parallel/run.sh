@@ -11,6 +11,8 @@
 #
 #   benchmarks/parallel/run.sh [--quick] [DPANA]
 #
+# ORDERING="by MUMPS" lets MUMPS order (AMD) instead of giving it dpana's
+# nested dissection (Contact / Schur ordering, the default).
 # SIZES="m1xh1 m2xh2 ..." and NPS="1 2" choose other sizes (m x h x m
 # subdivisions) and rank counts; the runs already in the work folder stay
 # in the table. --quick: the smallest size only. DPANA defaults to build/dpana; PYTHON
@@ -43,9 +45,13 @@ for size in $sizes; do
     run="$work/receding_${m}x${h}x${m}_np$np"
     rm -rf "$run"
     mkdir -p "$run"
+    # In memory, MUMPS given dpana's ordering (the scene's defaults);
+    # ORDERING="by MUMPS" for MUMPS' own (AMD).
     sed -e "s/Subdivisions = .*/Subdivisions = $m, $h, $m/" \
-        -e "s|Directory = .*|Directory = output|" \
-        -e "s/^  set Cone model .*/&\n  set Factorisation back end  = mumps/" \
+        -e "s|^  set Directory = .*|  set Directory = output|" \
+        -e "/Out-of-core directory/d" \
+        -e "/Factorisation back end/d" \
+        -e "s/^  set Cone model .*/&\n  set Factorisation back end  = mumps\n  set Schur ordering = ${ORDERING:-interior nested dissection}/" \
         "$root/prm/scale/receding_3d_1M.prm" > "$run/scene.prm"
     cat /proc/loadavg > "$run/load_before.txt"
     if [ "$np" = 1 ]; then

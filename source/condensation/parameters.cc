@@ -59,11 +59,11 @@ namespace dpana
         "graph of the other dofs), 'constrained AMD' (CAMD on the whole "
         "graph, the surface a second constraint set) or 'moved last' "
         "(CHOLMOD's ordering of the whole matrix, the surface dofs moved to "
-        "the end). The MUMPS back end is given the same ordering on one "
-        "process; 'by MUMPS' lets MUMPS order (AMD when it computes a Schur "
-        "complement), as it always does on several ranks. The result is the "
-        "same up to round-off; the time and memory of the factorisation "
-        "differ (benchmarks/condensation).");
+        "the end). The MUMPS back end is given the same ordering, on one "
+        "process and on the MPI route; 'by MUMPS' lets MUMPS order (AMD when "
+        "it computes a Schur complement). The result is the same up to "
+        "round-off; the time and memory of the factorisation differ "
+        "(benchmarks/condensation).");
       prm.declare_entry("Memory limit (GB)",
                         "0",
                         dealii::Patterns::Double(0),

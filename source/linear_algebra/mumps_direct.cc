@@ -17,13 +17,23 @@ namespace dpana
   {
     struct DirectMumps::Impl
     {
+      explicit Impl(const MPI_Comm communicator)
+        : communicator(communicator)
+      {
+        MPI_Comm_rank(communicator, &rank);
+      }
+
+      MPI_Comm communicator;
+      int      rank = 0;
+
       // MUMPS keeps the instance's state in this structure; its solves
       // write to it, hence mutable.
       mutable DMUMPS_STRUC_C id;
 
-      // The matrix in MUMPS' coordinate format (1-based), the position of
-      // each unknown in the elimination order (MUMPS' PERM_IN), the Schur
-      // unknowns (1-based) and the Schur complement.
+      // This rank's part of the matrix in MUMPS' coordinate format
+      // (1-based), the Schur unknowns (1-based), and on rank 0 the position
+      // of each unknown in the elimination order (MUMPS' PERM_IN) and the
+      // Schur complement.
       std::vector<MUMPS_INT> irn, jcn, position, schur_list;
       std::vector<double>    a;
       Eigen::MatrixXd        S;
@@ -38,21 +48,29 @@ namespace dpana
 
 
 
-    // A MUMPS instance on this process alone (PAR = 1: the host works), for
-    // a symmetric positive definite matrix (SYM = 1), silent.
-    DirectMumps::DirectMumps()
-      : impl(std::make_unique<Impl>())
+    // A MUMPS instance over the ranks of @p communicator (PAR = 1: the host
+    // works), for a symmetric positive definite matrix (SYM = 1), silent.
+    DirectMumps::DirectMumps(const MPI_Comm communicator)
+      : impl(std::make_unique<Impl>(communicator))
     {
       auto &id = impl->id;
       std::memset(&id, 0, sizeof(id));
-      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
+      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
       id.par          = 1;
       id.sym          = 1;
       impl->call(-1);
+      if (id.infog[0] < 0)
+        throw std::runtime_error("MUMPS could not be started (INFOG(1) = " +
+                                 std::to_string(id.infog[0]) + ")");
       id.icntl[0] = -1;
       id.icntl[1] = -1;
       id.icntl[2] = -1;
       id.icntl[3] = 0;
+      // No iterative refinement (ICNTL(10)) and no error analysis
+      // (ICNTL(11)): the solves then do not read the matrix, which
+      // factorize() releases.
+      id.icntl[9]  = 0;
+      id.icntl[10] = 0;
     }
 
 
@@ -65,12 +83,15 @@ namespace dpana
 
 
 
-    // MUMPS' user ordering (ICNTL(7) = 1) takes the position of each unknown;
-    // the centralised Schur complement (ICNTL(19) = 2) of a symmetric matrix
-    // is its lower triangle by columns, which is LAPACK's column-major lower
-    // triangle.
+    // The matrix distributed (ICNTL(18) = 3), MUMPS' user ordering
+    // (ICNTL(7) = 1: the position of each unknown, on the host), the Schur
+    // complement centralised on the host (ICNTL(19) = 1: for a symmetric
+    // matrix its lower triangle by rows, the upper one of the column-major
+    // array).
     int
-    DirectMumps::analyse(const std::vector<int>  &row_start,
+    DirectMumps::analyse(const int                n,
+                         const int                first_row,
+                         const std::vector<int>  &row_start,
                          const std::vector<int>  &columns,
                          std::vector<double>      values,
                          const std::vector<long> &order,
@@ -78,45 +99,51 @@ namespace dpana
                          const std::string       &ooc_directory,
                          const int                relaxation)
     {
-      const long n = row_start.size() - 1;
+      const long n_rows = row_start.size() - 1;
       impl->irn.resize(columns.size());
       impl->jcn.resize(columns.size());
-      for (long r = 0; r < n; ++r)
+      for (long r = 0; r < n_rows; ++r)
         for (long p = row_start[r]; p < row_start[r + 1]; ++p)
           {
-            impl->irn[p] = r + 1;
+            impl->irn[p] = first_row + r + 1;
             impl->jcn[p] = columns[p] + 1;
           }
       impl->a = std::move(values);
-      impl->position.resize(n);
-      for (long k = 0; k < n; ++k)
-        impl->position[order[k]] = k + 1;
+
+      auto &id      = impl->id;
+      id.n          = n;
+      id.icntl[17]  = 3;
+      id.nnz_loc    = columns.size();
+      id.irn_loc    = impl->irn.data();
+      id.jcn_loc    = impl->jcn.data();
+      id.a_loc      = impl->a.data();
+      id.icntl[6]   = 1;
+      id.size_schur = schur.size();
       impl->schur_list.resize(schur.size());
       for (std::size_t k = 0; k < schur.size(); ++k)
         impl->schur_list[k] = schur[k] + 1;
-      const long m = schur.size();
-      impl->S.setZero(m, m);
-
-      auto &id    = impl->id;
-      id.n        = n;
-      id.nnz      = columns.size();
-      id.irn      = impl->irn.data();
-      id.jcn      = impl->jcn.data();
-      id.a        = impl->a.data();
-      id.icntl[6] = 1;
-      id.perm_in  = impl->position.data();
-      if (m > 0)
+      if (impl->rank == 0)
         {
-          id.icntl[18]     = 2;
-          id.size_schur    = m;
+          impl->position.resize(n);
+          for (long k = 0; k < n; ++k)
+            impl->position[order[k]] = k + 1;
+          id.perm_in = impl->position.data();
+          impl->S.setZero(schur.size(), schur.size());
+        }
+      if (!schur.empty())
+        {
+          id.icntl[18]     = 1;
           id.listvar_schur = impl->schur_list.data();
           id.schur         = impl->S.data();
-          id.schur_lld     = m;
+          id.schur_lld     = schur.size();
         }
       if (relaxation > 0)
         id.icntl[13] = relaxation;
       if (!ooc_directory.empty())
         {
+          if (ooc_directory.size() >= sizeof(id.ooc_tmpdir))
+            throw std::runtime_error("the out-of-core directory name is "
+                                     "longer than MUMPS keeps");
           id.icntl[21] = 1;
           std::strncpy(id.ooc_tmpdir,
                        ooc_directory.c_str(),
@@ -129,14 +156,15 @@ namespace dpana
 
 
     // MUMPS copies the matrix into its own structures here; without
-    // iterative refinement (ICNTL(10) = 0) its solves do not read it again.
+    // iterative refinement and error analysis (ICNTL(10) = ICNTL(11) = 0,
+    // set by the constructor) its solves do not read it again.
     int
     DirectMumps::factorize()
     {
       impl->call(2);
-      impl->id.irn = nullptr;
-      impl->id.jcn = nullptr;
-      impl->id.a   = nullptr;
+      impl->id.irn_loc = nullptr;
+      impl->id.jcn_loc = nullptr;
+      impl->id.a_loc   = nullptr;
       std::vector<MUMPS_INT>().swap(impl->irn);
       std::vector<MUMPS_INT>().swap(impl->jcn);
       std::vector<double>().swap(impl->a);
@@ -148,14 +176,16 @@ namespace dpana
     Eigen::MatrixXd
     DirectMumps::take_schur_complement()
     {
-      impl->id.schur = nullptr;
-      return std::move(impl->S);
+      impl->id.schur    = nullptr;
+      Eigen::MatrixXd S = std::move(impl->S);
+      S.transposeInPlace();
+      return S;
     }
 
 
 
-    // One dense right-hand side, centralised (ICNTL(20) = 0), solution in
-    // its place (ICNTL(21) = 0).
+    // One dense right-hand side and its solution, centralised on the host
+    // (ICNTL(20) = 0, ICNTL(21) = 0), the solution then sent to every rank.
     Eigen::VectorXd
     DirectMumps::solve_interior(const Eigen::VectorXd &b) const
     {
@@ -172,6 +202,7 @@ namespace dpana
       if (id.infog[0] < 0)
         throw std::runtime_error("MUMPS' solve failed (INFOG(1) = " +
                                  std::to_string(id.infog[0]) + ")");
+      MPI_Bcast(x.data(), x.size(), MPI_DOUBLE, 0, impl->communicator);
       for (const MUMPS_INT k : impl->schur_list)
         x(k - 1) = 0.0;
       return x;

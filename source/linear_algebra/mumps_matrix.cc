@@ -54,12 +54,6 @@ namespace dpana
                 K, 1, row_start.data(), columns.data(), values.data()),
               "MatSeqSBAIJSetPreallocationCSR");
       check(MatSetOption(K, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");
-      if (calls_mumps_directly())
-        {
-          csr_start   = std::move(row_start);
-          csr_columns = std::move(columns);
-          csr_values  = std::move(values);
-        }
     }
 
 

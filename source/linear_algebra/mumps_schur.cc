@@ -178,9 +178,6 @@ namespace dpana
       // sets this for each solve).
       if (!direct)
         check(MatMumpsSetIcntl(F, 26, 0), "MatMumpsSetIcntl(26)");
-      std::vector<PetscInt>().swap(csr_start);
-      std::vector<PetscInt>().swap(csr_columns);
-      std::vector<PetscScalar>().swap(csr_values);
     }
 
 
@@ -569,9 +566,7 @@ namespace dpana
       const char *const orderings[] = {
         "AMD", "given", "AMF", "SCOTCH", "PORD", "METIS", "QAMD"};
       const auto gflops = std::to_string(flops / 1e9);
-      return std::string("ordering ") +
-             (ordering >= 0 && ordering <= 6 ? orderings[ordering] : "?") +
-             ", " + gflops.substr(0, gflops.find('.') + 3) +
+      return gflops.substr(0, gflops.find('.') + 3) +
              " Gflop, memory estimated " + std::to_string(estimated_total_mb) +
              " MB (at most " + std::to_string(estimated_max_mb) +
              " MB on one rank), used " + std::to_string(used_total_mb) +
@@ -585,7 +580,8 @@ namespace dpana
                 std::string()) +
              std::to_string(factor_entries) +
              " factor entries, Schur complement of " +
-             std::to_string(schur_size) + " unknowns";
+             std::to_string(schur_size) + " unknowns, ordering " +
+             (ordering >= 0 && ordering <= 6 ? orderings[ordering] : "?");
     }
   } // namespace linear_algebra
 } // namespace dpana

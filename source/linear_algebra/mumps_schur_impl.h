@@ -6,9 +6,10 @@
 
 // The private state of MumpsSchurFactorization, shared by its two source
 // files: mumps_matrix.cc (the matrix K_r handed to PETSc, whole or in
-// shares) and mumps_schur.cc (the factorisation, S and the solves). With a
-// given ordering on one process MUMPS is called directly (mumps_direct.h);
-// K_r is then handed to PETSc as well, for the products with it.
+// shares), mumps_schur.cc (the factorisation, S and the solves) and
+// mumps_given_ordering.cc (with a given ordering MUMPS is called directly,
+// mumps_direct.h, the rows of K_r taken from PETSc's matrix, which serves
+// the products with it).
 
 #include <dpana/linear_algebra/mumps_schur.h>
 #include <dpana/parallel/petsc_calls.h>
@@ -53,17 +54,11 @@ namespace dpana
       std::vector<unsigned int>         schur;
       Eigen::MatrixXd                   L;
 
-      // The upper triangle of K_r in compressed rows, kept by
-      // create_matrix() for the direct analysis and released after it.
-      std::vector<PetscInt>    csr_start, csr_columns;
-      std::vector<PetscScalar> csr_values;
-
-      // Whether MUMPS is called directly: an ordering is given, and the
-      // whole matrix is on this one process.
+      // Whether MUMPS is called directly: an ordering is given.
       bool
       calls_mumps_directly() const
       {
-        return given_ordering.has_value() && n_ranks == 1 && !in_shares;
+        return given_ordering.has_value();
       }
 
       void
@@ -93,8 +88,13 @@ namespace dpana
       try_factor(const PetscInt relaxation);
       PetscInt
       try_factor_directly(const PetscInt relaxation);
+      void
+      upper_rows(std::vector<PetscInt>    &row_start,
+                 std::vector<PetscInt>    &columns,
+                 std::vector<PetscScalar> &values) const;
       std::vector<long>
-      elimination_order() const;
+      elimination_order(const std::vector<PetscInt> &row_start,
+                        const std::vector<PetscInt> &columns) const;
       void
       factor_schur_complement();
       void

@@ -77,8 +77,8 @@ namespace dpana
         linear_algebra::LastBlockOrdering::interior_nested_dissection;
       /**
        * Whether MUMPS orders the unknowns itself (`Schur ordering = by
-       * MUMPS`, Backend::mumps only) instead of being given #ordering; on
-       * more than one rank it always does (MumpsSchurFactorization).
+       * MUMPS`, Backend::mumps only) instead of being given #ordering
+       * (MumpsSchurFactorization).
        */
       bool mumps_orders_itself = false;
       /**

@@ -44,13 +44,16 @@ namespace dpana
      * degree, whose fronts and flops grow much faster than those of a
      * nested dissection on 3D meshes (doc/parallel.md). PETSc cannot hand
      * MUMPS an ordering for a Cholesky factorisation. After set_ordering()
-     * with an ordering, a factorisation on one process therefore calls
-     * MUMPS through its own C interface (dmumps_c, MPI_COMM_SELF) with the
+     * with an ordering, a factorisation therefore calls MUMPS through its
+     * own C interface (dmumps_c, on the same communicator) with the
      * ordering of SparseCholesky (order_last_block(), $\Gamma$ last) as
      * its user ordering (ICNTL(7) = 1, which MUMPS keeps with a Schur
      * complement): the same Schur complement, interior solves and out-of-
-     * core factor, the matrix still handed to PETSc for the products with
-     * it. On several ranks MUMPS orders by itself.
+     * core factor. The matrix is still assembled in PETSc, which serves
+     * the products with it; each rank hands MUMPS the rows of it that it
+     * owns (MUMPS' distributed input, ICNTL(18) = 3), and rank 0 computes
+     * the ordering on the pattern of the whole matrix, gathered there.
+     * MUMPS' analysis is sequential on rank 0 in either case.
      *
      * <h3>Solves</h3>
      *
@@ -249,7 +252,7 @@ namespace dpana
       set_out_of_core_directory(const std::string &directory);
 
       /**
-       * The ordering of the unknowns handed to MUMPS on one process (see
+       * The ordering of the unknowns handed to MUMPS (see
        * the class documentation), from the next factorize() on; none (the
        * default): MUMPS' own.
        */
