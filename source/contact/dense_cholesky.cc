@@ -34,6 +34,19 @@ namespace dpana
 
 
 
+      // BLAS' triangular solve in the precision of Scalar.
+      template <typename Scalar>
+      constexpr auto
+      trsm()
+      {
+        if constexpr (std::is_same_v<Scalar, float>)
+          return &strsm_;
+        else
+          return &dtrsm_;
+      }
+
+
+
       // R <- L^{-1} R or L^{-T} R (BLAS trsm) with the lower triangle L of
       // @p factor, in the precision of its scalars.
       template <typename Scalar>
@@ -46,31 +59,11 @@ namespace dpana
         const int    n = as_int(factor.rows()), k = as_int(R.cols());
         const Scalar one   = 1;
         const char  *trans = transpose ? "T" : "N";
-        if constexpr (std::is_same_v<Scalar, float>)
-          strsm_("L",
-                 "L",
-                 trans,
-                 "N",
-                 &n,
-                 &k,
-                 &one,
-                 factor.data(),
-                 &n,
-                 R.data(),
-                 &n);
-        else
-          dtrsm_("L",
-                 "L",
-                 trans,
-                 "N",
-                 &n,
-                 &k,
-                 &one,
-                 factor.data(),
-                 &n,
-                 R.data(),
-                 &n);
+        trsm<Scalar>()(
+          "L", "L", trans, "N", &n, &k, &one, factor.data(), &n, R.data(), &n);
       }
+
+
 
       // OpenBLAS on one thread for the blocks below 1024 rows (restored at
       // the end of the scope): there the threads' start and synchronisation

@@ -65,6 +65,7 @@ namespace dpana
       const std::vector<PetscInt> &columns) const
     {
       const int        n_local = columns.size();
+      const int        n_ranks = rows.counts.size();
       std::vector<int> sizes(n_ranks), offsets(n_ranks, 0);
       MPI_Gather(
         &n_local, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, communicator);

@@ -16,47 +16,18 @@ namespace dpana
   namespace linear_algebra
   {
     using parallel::check;
-    using parallel::infog;
     using parallel::QuietPetsc;
 
 
 
     namespace
     {
-      // What MUMPS reports of the factor F, after its analysis or its
-      // factorisation.
-      //
       // MUMPS gives a count of factor entries that does not fit in its
       // integers as minus the count in millions.
       long
       entries(const int infog_value)
       {
         return infog_value < 0 ? -1000000L * infog_value : infog_value;
-      }
-
-      // @p infog and @p rinfog read MUMPS' INFOG(i) and RINFOG(i).
-      template <typename Infog, typename Rinfog>
-      MumpsSchurFactorization::Statistics
-      statistics_from(const bool         out_of_core,
-                      const Infog       &infog,
-                      const Rinfog      &rinfog,
-                      const unsigned int schur_size)
-      {
-        MumpsSchurFactorization::Statistics s;
-        s.out_of_core              = out_of_core;
-        s.estimated_ooc_max_mb     = infog(26);
-        s.estimated_ooc_total_mb   = infog(27);
-        s.estimated_flops          = rinfog(1);
-        s.flops                    = rinfog(3);
-        s.estimated_max_mb         = infog(16);
-        s.estimated_total_mb       = infog(17);
-        s.estimated_factor_entries = entries(infog(20));
-        s.used_max_mb              = infog(21);
-        s.used_total_mb            = infog(22);
-        s.factor_entries           = entries(infog(29));
-        s.schur_size               = schur_size;
-        s.ordering                 = infog(7);
-        return s;
       }
     } // namespace
 
@@ -66,23 +37,56 @@ namespace dpana
 
 
 
-    // What MUMPS reports, from the direct instance or through PETSc.
+    // MUMPS' INFOG(i), RINFOG(i) and ICNTL(i), from the direct instance or
+    // through PETSc.
+    int
+    MumpsSchurFactorization::Impl::infog(const int i) const
+    {
+      return direct ? direct->infog(i) : parallel::infog(F, i);
+    }
+
+
+
+    double
+    MumpsSchurFactorization::Impl::rinfog(const int i) const
+    {
+      return direct ? direct->rinfog(i) : parallel::rinfog(F, i);
+    }
+
+
+
+    int
+    MumpsSchurFactorization::Impl::icntl(const int i) const
+    {
+      if (direct)
+        return direct->icntl(i);
+      PetscInt value = 0;
+      MatMumpsGetIcntl(F, i, &value);
+      return value;
+    }
+
+
+
+    // What MUMPS reports of the factor, after its analysis or its
+    // factorisation.
     MumpsSchurFactorization::Statistics
     MumpsSchurFactorization::Impl::statistics() const
     {
-      if (direct)
-        return statistics_from(
-          direct->icntl(22) == 1,
-          [this](const int i) { return direct->infog(i); },
-          [this](const int i) { return direct->rinfog(i); },
-          gamma.size());
-      PetscInt ooc = 0;
-      MatMumpsGetIcntl(F, 22, &ooc);
-      return statistics_from(
-        ooc == 1,
-        [this](const int i) { return infog(F, i); },
-        [this](const int i) { return parallel::rinfog(F, i); },
-        gamma.size());
+      Statistics s;
+      s.out_of_core              = icntl(22) == 1;
+      s.estimated_ooc_max_mb     = infog(26);
+      s.estimated_ooc_total_mb   = infog(27);
+      s.estimated_flops          = rinfog(1);
+      s.flops                    = rinfog(3);
+      s.estimated_max_mb         = infog(16);
+      s.estimated_total_mb       = infog(17);
+      s.estimated_factor_entries = entries(infog(20));
+      s.used_max_mb              = infog(21);
+      s.used_total_mb            = infog(22);
+      s.factor_entries           = entries(infog(29));
+      s.schur_size               = gamma.size();
+      s.ordering                 = infog(7);
+      return s;
     }
 
 
@@ -167,11 +171,7 @@ namespace dpana
               std::to_string(free.size()) +
               " unknowns: it is not positive definite; a stiffness matrix is "
               "singular when the body is not held against rigid motions");
-          if (direct)
-            relaxation = direct->icntl(14);
-          else
-            MatMumpsGetIcntl(F, 14, &relaxation);
-          relaxation = 2 * std::max<PetscInt>(relaxation, 20);
+          relaxation = 2 * std::max<PetscInt>(icntl(14), 20);
           destroy_factor();
         }
       // Later solves with F are solves with K_II only (the direct instance
@@ -496,7 +496,7 @@ namespace dpana
     int
     MumpsSchurFactorization::ordering() const
     {
-      return impl->direct ? impl->direct->infog(7) : infog(impl->F, 7);
+      return impl->infog(7);
     }
 
 
@@ -504,7 +504,7 @@ namespace dpana
     int
     MumpsSchurFactorization::factor_memory_mb() const
     {
-      return impl->direct ? impl->direct->infog(22) : infog(impl->F, 22);
+      return impl->infog(22);
     }
 
 

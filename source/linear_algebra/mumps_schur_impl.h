@@ -32,15 +32,13 @@ namespace dpana
         : communicator(communicator)
       {
         MPI_Comm_rank(communicator, &rank);
-        MPI_Comm_size(communicator, &n_ranks);
       }
 
       MPI_Comm                                communicator;
       std::function<void(const Statistics &)> analysis_check;
       bool                                    in_shares = false;
       std::string                             out_of_core_directory;
-      int                                     rank    = 0;
-      int                                     n_ranks = 1;
+      int                                     rank = 0;
       std::optional<LastBlockOrdering>        given_ordering;
       std::unique_ptr<DirectMumps>            direct;
       parallel::RowRange                      rows;
@@ -108,6 +106,12 @@ namespace dpana
       }
       Statistics
       statistics() const;
+      int
+      infog(const int i) const;
+      double
+      rinfog(const int i) const;
+      int
+      icntl(const int i) const;
 
       // y = K_II^{-1} b_I, zero on Gamma.
       Eigen::VectorXd
