@@ -243,11 +243,16 @@ FAMILIES.append(Family(
 # the disc's vertices, the size field of the disc elsewhere), both bodies
 # meshed as GetFEM's.
 BLOCK17 = ("--body", "block") + RHO17
-# The same meshes for the rigid punch (E1/E2 = 1e3).
-for ratio, what in (("1", "an elastic block"), ("1e3", "a soft block")):
+# The same meshes for the rigid punch (E1/E2 = 1e3) and the stiff
+# foundation (E1/E2 = 1e-3), frictionless and with mu = 1.
+for ratio, mu, what in (
+        (r, m, w) for r, w in (("1", "an elastic block"),
+                               ("1e3", "a soft block"),
+                               ("1e-3", "a stiff block"))
+        for m in ("mu0", "mu1")):
     FAMILIES.append(Family(
-        f"hertz_ratio_{ratio}_mu0_graded_block",
-        f"hertz_ratio_{ratio}_mu0_graded_block.prm", 2,
+        f"hertz_ratio_{ratio}_{mu}_graded_block",
+        f"hertz_ratio_{ratio}_{mu}_graded_block.prm", 2,
         [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
                       "Body 2/Geometry/Gmsh/Mesh file":
                       DiscMesh(g, *BLOCK17)}) for g in range(0, 5)],
@@ -256,7 +261,8 @@ for ratio, what in (("1", "an elastic block"), ("1e3", "a soft block")):
                       DiscMesh(5, *BLOCK17)})],
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
-        note=f"Circular body on {what}, both on graded gmsh meshes"))
+        note=f"Circular body on {what}, both on graded gmsh meshes"
+             + (", mu = 1" if mu == "mu1" else "")))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,
@@ -271,16 +277,19 @@ for mu in ("mu0", "mu1"):
 # 20 mm lie within 30 deg).
 RHO21 = ("--set", "Rho=21", "--set", "Arc=33.75")
 CAVITY21 = ("--body", "cavity") + RHO21
-FAMILIES.append(Family(
-    "hertz_cavity_mu0_graded", "hertz_cavity_mu0_graded.prm", 2,
-    [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO21),
-                  "Body 2/Geometry/Gmsh/Mesh file": DiscMesh(g, *CAVITY21)})
-     for g in range(0, 5)],
-    [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO21),
-                  "Body 2/Geometry/Gmsh/Mesh file": DiscMesh(5, *CAVITY21)})],
-    quantities=HERTZ_Q, plot=("N_max", "a_m"),
-    exact={"resultant": 100000.0}, hertz=True,
-    note="Circular body in a cavity R = 120, both on graded gmsh meshes"))
+for mu in ("mu0", "mu1"):
+    FAMILIES.append(Family(
+        f"hertz_cavity_{mu}_graded", f"hertz_cavity_{mu}_graded.prm", 2,
+        [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO21),
+                      "Body 2/Geometry/Gmsh/Mesh file":
+                      DiscMesh(g, *CAVITY21)}) for g in range(0, 5)],
+        [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO21),
+                      "Body 2/Geometry/Gmsh/Mesh file":
+                      DiscMesh(5, *CAVITY21)})],
+        quantities=HERTZ_Q, plot=("N_max", "a_m"),
+        exact={"resultant": 100000.0}, hertz=True,
+        note="Circular body in a cavity R = 120, both on graded gmsh meshes"
+             + (", mu = 1" if mu == "mu1" else "")))
 FAMILIES.append(Family(
     "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
     sphere(range(0, 5)), sphere([5]),

@@ -37,6 +37,9 @@ families.py):
                             circular body in the cavity R = 120 mm)
   hertz_cavity_mu0_graded   the same as hertz_cavity_mu0 (paired with
                             dpana's graded disc and graded cavity)
+  hertz_ratio_{1,1e3}_mu1_graded_block, hertz_ratio_1e-3_mu{0,1}_graded_block,
+  hertz_cavity_mu1_graded   the same as the families without _graded...
+                            (paired with dpana's graded meshes)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
   hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
   hertz_two_spheres, hertz_two_spheres_mu03
@@ -113,6 +116,12 @@ for ratio in ("1", "1e-3", "1e3"):
     FAMILIES[f"hertz_ratio_{ratio}_mu1"] = (
         ["hertz.py", "--body", "circle", "--ratio", ratio, "--mu", "1"],
         range(0, 4), [4])
+# The same GetFEM sweeps, paired with dpana's graded disc and foundation
+# (or cavity): the frictional pairs and the stiff foundation.
+for name in ("hertz_ratio_1_mu1", "hertz_ratio_1e3_mu1", "hertz_ratio_1e-3_mu0",
+             "hertz_ratio_1e-3_mu1"):
+    FAMILIES[name + "_graded_block"] = FAMILIES[name]
+FAMILIES["hertz_cavity_mu1_graded"] = FAMILIES["hertz_cavity_mu1"]
 # h of a level, in the units of the dpana family (families.py).
 H = {"hertz.py": lambda level: 2.0 ** -level,
      "receding.py": lambda level: 40.0 / (4 * 2 ** level),
