@@ -18,6 +18,7 @@ packages=(
   libdeal.ii-dev        # finite elements (deal.II 9.4)
   libeigen3-dev         # dense algebra and the CHOLMOD interface
   libsuitesparse-dev    # CHOLMOD sparse Cholesky
+  libmetis-dev          # nested dissection of a body's interior
   libmumps-dev          # MUMPS' C interface (a given ordering on one process)
   libopenblas-dev       # the BLAS of the dense products of the condensation
   nlohmann-json3-dev    # summary.json

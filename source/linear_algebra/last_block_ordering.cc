@@ -7,6 +7,11 @@
 
 #include <Eigen/CholmodSupport>
 
+#include <algorithm>
+#include <limits>
+
+#include <metis.h>
+
 namespace dpana
 {
   namespace linear_algebra
@@ -76,8 +81,182 @@ namespace dpana
 
 
 
-      // METIS on the interior block K_II (the rows and columns of the
-      // interior unknowns), then the last unknowns in increasing order.
+      // The graph of the interior unknowns (the rows and columns of K_II),
+      // both triangles and no diagonal, in compressed rows: row k lists the
+      // interior unknowns coupled to k, in increasing order. Columns of
+      // K_lower are visited in order and hold their rows sorted, so row k
+      // receives first its neighbours j < k (from the columns j) and then
+      // those j > k (from its own column): sorted without a sort.
+      struct InteriorGraph
+      {
+        std::vector<CholmodIndex> start, adjacent;
+
+        CholmodIndex
+        degree(const CholmodIndex k) const
+        {
+          return start[k + 1] - start[k];
+        }
+      };
+
+      InteriorGraph
+      interior_graph(const CholmodMatrix             &K_lower,
+                     const std::vector<CholmodIndex> &index,
+                     const std::size_t                n_interior)
+      {
+        InteriorGraph g;
+        g.start.assign(n_interior + 1, 0);
+        const auto for_each_edge = [&](const auto &visit) {
+          for (Eigen::Index c = 0; c < K_lower.outerSize(); ++c)
+            for (CholmodMatrix::InnerIterator it(K_lower, c); it; ++it)
+              if (it.row() != c && index[it.row()] >= 0 && index[c] >= 0)
+                visit(index[c], index[it.row()]);
+        };
+        for_each_edge([&](const CholmodIndex j, const CholmodIndex k) {
+          ++g.start[j + 1];
+          ++g.start[k + 1];
+        });
+        for (std::size_t k = 0; k < n_interior; ++k)
+          g.start[k + 1] += g.start[k];
+        g.adjacent.resize(g.start.back());
+        std::vector<CholmodIndex> next(g.start.begin(), g.start.end() - 1);
+        for_each_edge([&](const CholmodIndex j, const CholmodIndex k) {
+          g.adjacent[next[j]++] = k;
+          g.adjacent[next[k]++] = j;
+        });
+        return g;
+      }
+
+
+
+      // Whether the interior unknowns k - 1 and k are indistinguishable: the
+      // same closed neighbourhood (each coupled to the other and to the same
+      // others), as the dim displacement components of a mesh vertex are.
+      bool
+      same_closed_neighbourhood(const InteriorGraph &g, const CholmodIndex k)
+      {
+        if (g.degree(k) != g.degree(k - 1))
+          return false;
+        const auto a = g.adjacent.begin() + g.start[k - 1];
+        const auto b = g.adjacent.begin() + g.start[k];
+        // Row k - 1 holds k where row k holds k - 1; all else must agree.
+        for (CholmodIndex i = 0; i < g.degree(k); ++i)
+          if ((a[i] == k ? k - 1 : a[i]) != b[i])
+            return false;
+        return std::binary_search(a, a + g.degree(k - 1), k);
+      }
+
+
+
+      // METIS' nested dissection of the interior graph, on its vertices:
+      // runs of consecutive interior unknowns with the same closed
+      // neighbourhood (the components of a mesh vertex, numbered together)
+      // are one METIS vertex weighted by their number, so METIS orders a
+      // graph of the size of the mesh, not of the dofs. Returns the interior
+      // unknowns in elimination order.
+      std::vector<CholmodIndex>
+      metis_on_vertices(const InteriorGraph &g)
+      {
+        const auto n = static_cast<CholmodIndex>(g.start.size() - 1);
+        std::vector<CholmodIndex> first; // first unknown of each vertex
+        std::vector<idx_t>        vertex_of(n);
+        for (CholmodIndex k = 0; k < n; ++k)
+          {
+            if (k == 0 || !same_closed_neighbourhood(g, k))
+              first.push_back(k);
+            vertex_of[k] = first.size() - 1;
+          }
+        const auto n_vertices = static_cast<idx_t>(first.size());
+        first.push_back(n);
+
+        std::vector<idx_t> start(1, 0), adjacent, weight;
+        for (idx_t v = 0; v < n_vertices; ++v)
+          {
+            weight.push_back(first[v + 1] - first[v]);
+            // Neighbours of the vertex: those of its first unknown, mapped
+            // (sorted, so repeated vertices are adjacent), itself left out.
+            for (CholmodIndex i = g.start[first[v]]; i < g.start[first[v] + 1];
+                 ++i)
+              {
+                const idx_t w = vertex_of[g.adjacent[i]];
+                if (w != v && (adjacent.size() == std::size_t(start.back()) ||
+                               adjacent.back() != w))
+                  adjacent.push_back(w);
+              }
+            AssertThrow(adjacent.size() <
+                          std::size_t(std::numeric_limits<idx_t>::max()),
+                        dealii::ExcMessage(
+                          "The interior graph is too large for METIS' "
+                          "32-bit indices."));
+            start.push_back(adjacent.size());
+          }
+
+        std::vector<idx_t> perm(n_vertices), inverse(n_vertices);
+        idx_t              options[METIS_NOPTIONS];
+        METIS_SetDefaultOptions(options);
+        idx_t nv = n_vertices;
+        AssertThrow(METIS_NodeND(&nv,
+                                 start.data(),
+                                 adjacent.data(),
+                                 weight.data(),
+                                 options,
+                                 perm.data(),
+                                 inverse.data()) == METIS_OK,
+                    dealii::ExcMessage("METIS' nested dissection failed."));
+        std::vector<CholmodIndex> order;
+        order.reserve(n);
+        for (const idx_t v : perm)
+          for (CholmodIndex k = first[v]; k < first[v + 1]; ++k)
+            order.push_back(k);
+        return order;
+      }
+
+
+
+      // The ordering followed by a postorder of its elimination tree
+      // (CHOLMOD's symbolic analysis of the graph), which makes the columns
+      // of each supernode consecutive, as cholmod_metis() does.
+      void
+      postorder(InteriorGraph             &g,
+                std::vector<CholmodIndex> &order,
+                cholmod_common            &common)
+      {
+        const std::size_t n = order.size();
+        cholmod_sparse    A{};
+        A.nrow = A.ncol = n;
+        A.nzmax         = g.adjacent.size();
+        A.p             = g.start.data();
+        A.i             = g.adjacent.data();
+        A.stype         = -1; // symmetric: the lower triangle is read
+        A.itype         = CHOLMOD_LONG;
+        A.xtype         = CHOLMOD_PATTERN;
+        A.dtype         = CHOLMOD_DOUBLE;
+        A.sorted        = 1;
+        A.packed        = 1;
+        std::vector<CholmodIndex> parent(n), post(n), count(n), first(n),
+          level(n);
+        AssertThrow(cholmod_l_analyze_ordering(&A,
+                                               CHOLMOD_METIS,
+                                               order.data(),
+                                               nullptr,
+                                               0,
+                                               parent.data(),
+                                               post.data(),
+                                               count.data(),
+                                               first.data(),
+                                               level.data(),
+                                               &common),
+                    dealii::ExcMessage(
+                      "CHOLMOD's analysis of the METIS ordering failed."));
+        std::vector<CholmodIndex> postordered(n);
+        for (std::size_t k = 0; k < n; ++k)
+          postordered[k] = order[post[k]];
+        order.swap(postordered);
+      }
+
+
+
+      // METIS on the interior block K_II, then the last unknowns in
+      // increasing order.
       std::vector<CholmodIndex>
       interior_nested_dissection(const CholmodMatrix     &K_lower,
                                  const std::vector<bool> &is_last,
@@ -90,23 +269,12 @@ namespace dpana
               index[i] = interior.size();
               interior.push_back(i);
             }
-        std::vector<Eigen::Triplet<double, CholmodIndex>> triplets;
-        for (Eigen::Index c = 0; c < K_lower.outerSize(); ++c)
-          for (CholmodMatrix::InnerIterator it(K_lower, c); it; ++it)
-            if (index[it.row()] >= 0 && index[it.col()] >= 0)
-              triplets.emplace_back(index[it.row()], index[it.col()], 1.0);
-        CholmodMatrix graph(interior.size(), interior.size());
-        graph.setFromTriplets(triplets.begin(), triplets.end());
-        const CholmodMatrix &K_II = graph;
-
-        std::vector<CholmodIndex> given(interior.size());
+        std::vector<CholmodIndex> given;
         if (!interior.empty())
           {
-            cholmod_sparse A = Eigen::viewAsCholmod(
-              K_II.template selfadjointView<Eigen::Lower>());
-            AssertThrow(
-              cholmod_l_metis(&A, nullptr, 0, 1, given.data(), &common),
-              dealii::ExcMessage("CHOLMOD's METIS ordering failed."));
+            InteriorGraph g = interior_graph(K_lower, index, interior.size());
+            given           = metis_on_vertices(g);
+            postorder(g, given, common);
             for (CholmodIndex &k : given)
               k = interior[k];
           }

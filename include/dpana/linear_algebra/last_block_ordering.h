@@ -64,7 +64,9 @@ namespace dpana
       /**
        * METIS' nested dissection (Karypis and Kumar 1998) of the graph of
        * the interior unknowns alone, postordered, then $\Gamma$ in its given
-       * order.
+       * order. METIS is given the graph of the mesh vertices: consecutive
+       * unknowns with the same couplings (the displacement components of a
+       * vertex) are one weighted vertex of its graph.
        */
       interior_nested_dissection
     };
