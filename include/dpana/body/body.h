@@ -555,6 +555,10 @@ namespace dpana
       const dealii::QGaussSimplex<dim - 1> face_quadrature;
       dealii::FEValues<dim>                fe_values;
       dealii::FEFaceValues<dim>            fe_face_values;
+      // The strains and divergences of the shape functions on the cell
+      // (constant for P1), kept from cell to cell.
+      std::vector<dealii::SymmetricTensor<2, dim>> eps;
+      std::vector<double>                          div;
     };
     void
     assemble_cell(
