@@ -147,65 +147,84 @@ namespace dpana
 
 
 
-      // METIS' nested dissection of the interior graph, on its vertices:
-      // runs of consecutive interior unknowns with the same closed
-      // neighbourhood (the components of a mesh vertex, numbered together)
-      // are one METIS vertex weighted by their number, so METIS orders a
-      // graph of the size of the mesh, not of the dofs. Returns the interior
-      // unknowns in elimination order.
-      std::vector<CholmodIndex>
-      metis_on_vertices(const InteriorGraph &g)
+      // The graph of the mesh vertices of the interior: runs of consecutive
+      // interior unknowns with the same closed neighbourhood (the components
+      // of a mesh vertex, numbered together) are one vertex, weighted by
+      // their number, in METIS' compressed rows.
+      struct VertexGraph
       {
-        const auto n = static_cast<CholmodIndex>(g.start.size() - 1);
-        std::vector<CholmodIndex> first; // first unknown of each vertex
-        std::vector<idx_t>        vertex_of(n);
+        std::vector<CholmodIndex> first; // first unknown of each vertex, n
+        std::vector<idx_t>        start, adjacent, weight;
+      };
+
+      VertexGraph
+      vertex_graph(const InteriorGraph &g)
+      {
+        const auto         n = static_cast<CholmodIndex>(g.start.size() - 1);
+        VertexGraph        vg;
+        std::vector<idx_t> vertex_of(n);
         for (CholmodIndex k = 0; k < n; ++k)
           {
             if (k == 0 || !same_closed_neighbourhood(g, k))
-              first.push_back(k);
-            vertex_of[k] = first.size() - 1;
+              vg.first.push_back(k);
+            vertex_of[k] = vg.first.size() - 1;
           }
-        const auto n_vertices = static_cast<idx_t>(first.size());
-        first.push_back(n);
-
-        std::vector<idx_t> start(1, 0), adjacent, weight;
+        const auto n_vertices = static_cast<idx_t>(vg.first.size());
+        vg.first.push_back(n);
+        vg.start.push_back(0);
         for (idx_t v = 0; v < n_vertices; ++v)
           {
-            weight.push_back(first[v + 1] - first[v]);
-            // Neighbours of the vertex: those of its first unknown, mapped
-            // (sorted, so repeated vertices are adjacent), itself left out.
-            for (CholmodIndex i = g.start[first[v]]; i < g.start[first[v] + 1];
-                 ++i)
+            vg.weight.push_back(vg.first[v + 1] - vg.first[v]);
+            // Those of its first unknown, mapped (sorted, so repeated
+            // vertices are adjacent), itself left out.
+            const CholmodIndex u = vg.first[v];
+            for (CholmodIndex i = g.start[u]; i < g.start[u + 1]; ++i)
               {
                 const idx_t w = vertex_of[g.adjacent[i]];
-                if (w != v && (adjacent.size() == std::size_t(start.back()) ||
-                               adjacent.back() != w))
-                  adjacent.push_back(w);
+                if (w != v &&
+                    (vg.adjacent.size() == std::size_t(vg.start.back()) ||
+                     vg.adjacent.back() != w))
+                  vg.adjacent.push_back(w);
               }
-            AssertThrow(adjacent.size() <
+            AssertThrow(vg.adjacent.size() <
                           std::size_t(std::numeric_limits<idx_t>::max()),
                         dealii::ExcMessage(
                           "The interior graph is too large for METIS' "
                           "32-bit indices."));
-            start.push_back(adjacent.size());
+            vg.start.push_back(vg.adjacent.size());
           }
+        return vg;
+      }
 
+
+
+      // METIS' nested dissection of the vertex graph, so that METIS orders a
+      // graph of the size of the mesh, not of the dofs; returns the interior
+      // unknowns in elimination order (the unknowns of a vertex together).
+      std::vector<CholmodIndex>
+      metis_on_vertices(VertexGraph &vg)
+      {
+        idx_t              n_vertices = vg.weight.size();
         std::vector<idx_t> perm(n_vertices), inverse(n_vertices);
-        idx_t              options[METIS_NOPTIONS];
-        METIS_SetDefaultOptions(options);
-        idx_t nv = n_vertices;
-        AssertThrow(METIS_NodeND(&nv,
-                                 start.data(),
-                                 adjacent.data(),
-                                 weight.data(),
-                                 options,
-                                 perm.data(),
-                                 inverse.data()) == METIS_OK,
-                    dealii::ExcMessage("METIS' nested dissection failed."));
+        for (idx_t v = 0; v < n_vertices; ++v)
+          perm[v] = v;
+        if (n_vertices > 1)
+          {
+            idx_t options[METIS_NOPTIONS];
+            METIS_SetDefaultOptions(options);
+            AssertThrow(METIS_NodeND(&n_vertices,
+                                     vg.start.data(),
+                                     vg.adjacent.data(),
+                                     vg.weight.data(),
+                                     options,
+                                     perm.data(),
+                                     inverse.data()) == METIS_OK,
+                        dealii::ExcMessage("METIS' nested dissection failed."));
+          }
         std::vector<CholmodIndex> order;
-        order.reserve(n);
+        order.reserve(vg.first.back());
         for (const idx_t v : perm)
-          for (CholmodIndex k = first[v]; k < first[v + 1]; ++k)
+          for (CholmodIndex k = vg.first[v]; k < vg.first[v + 1]; ++k)
             order.push_back(k);
         return order;
       }
@@ -214,7 +233,8 @@ namespace dpana
 
       // The ordering followed by a postorder of its elimination tree
       // (CHOLMOD's symbolic analysis of the graph), which makes the columns
-      // of each supernode consecutive, as cholmod_metis() does.
+      // of each supernode consecutive, as cholmod_metis() does. (CHOLMOD
+      // takes the graph through non-const pointers; it does not change it.)
       void
       postorder(InteriorGraph             &g,
                 std::vector<CholmodIndex> &order,
@@ -272,8 +292,9 @@ namespace dpana
         std::vector<CholmodIndex> given;
         if (!interior.empty())
           {
-            InteriorGraph g = interior_graph(K_lower, index, interior.size());
-            given           = metis_on_vertices(g);
+            InteriorGraph g  = interior_graph(K_lower, index, interior.size());
+            VertexGraph   vg = vertex_graph(g);
+            given            = metis_on_vertices(vg);
             postorder(g, given, common);
             for (CholmodIndex &k : given)
               k = interior[k];
