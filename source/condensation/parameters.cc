@@ -56,8 +56,9 @@ namespace dpana
           "interior nested dissection|constrained AMD|moved last|by MUMPS"),
         "The fill-reducing ordering of the factorisation of the Schur route, "
         "the surface dofs last: 'interior nested dissection' (METIS on the "
-        "graph of the other dofs), 'constrained AMD' (CAMD on the whole "
-        "graph, the surface a second constraint set) or 'moved last' "
+        "graph of the other dofs' mesh vertices), 'constrained AMD' (CAMD "
+        "on the whole graph, the surface a second constraint set) or 'moved "
+        "last' "
         "(CHOLMOD's ordering of the whole matrix, the surface dofs moved to "
         "the end). The MUMPS back end is given the same ordering, on one "
         "process and on the MPI route; 'by MUMPS' lets MUMPS order (AMD when "
