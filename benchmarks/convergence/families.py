@@ -103,6 +103,23 @@ class DiscMesh(SphereMesh):
     script, stem = "make_disc.py", "disc"
 
 
+def graded_pair(disc, other):
+    """Both bodies of a 2D Hertz pair on graded gmsh meshes (make_disc.py),
+    the disc with the options disc, the other body with other: levels
+    g = 0 ... 4 and the --full level 5, h = 2^(-g). Returns (levels,
+    full)."""
+    def level(g):
+        return (2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file":
+                            DiscMesh(g, *disc),
+                            "Body 2/Geometry/Gmsh/Mesh file":
+                            DiscMesh(g, *other)})
+    return [level(g) for g in range(0, 5)], [level(5)]
+
+
+# How a family's note names its friction.
+FRICTION = {"mu0": "", "mu1": ", mu = 1"}
+
+
 def sphere(levels, bodies=(("Body 1", ()),)):
     """Quarter spheres at make_sphere.py levels L: h = 2^(-L/2)."""
     return [(2.0 ** (-level / 2), {
@@ -253,16 +270,11 @@ for ratio, mu, what in (
     FAMILIES.append(Family(
         f"hertz_ratio_{ratio}_{mu}_graded_block",
         f"hertz_ratio_{ratio}_{mu}_graded_block.prm", 2,
-        [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
-                      "Body 2/Geometry/Gmsh/Mesh file":
-                      DiscMesh(g, *BLOCK17)}) for g in range(0, 5)],
-        [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
-                      "Body 2/Geometry/Gmsh/Mesh file":
-                      DiscMesh(5, *BLOCK17)})],
+        *graded_pair(RHO17, BLOCK17),
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
         note=f"Circular body on {what}, both on graded gmsh meshes"
-             + (", mu = 1" if mu == "mu1" else "")))
+             + FRICTION[mu]))
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}", f"hertz_cavity_{mu}.prm", 2,
@@ -280,16 +292,11 @@ CAVITY21 = ("--body", "cavity") + RHO21
 for mu in ("mu0", "mu1"):
     FAMILIES.append(Family(
         f"hertz_cavity_{mu}_graded", f"hertz_cavity_{mu}_graded.prm", 2,
-        [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO21),
-                      "Body 2/Geometry/Gmsh/Mesh file":
-                      DiscMesh(g, *CAVITY21)}) for g in range(0, 5)],
-        [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO21),
-                      "Body 2/Geometry/Gmsh/Mesh file":
-                      DiscMesh(5, *CAVITY21)})],
+        *graded_pair(RHO21, CAVITY21),
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
         note="Circular body in a cavity R = 120, both on graded gmsh meshes"
-             + (", mu = 1" if mu == "mu1" else "")))
+             + FRICTION[mu]))
 FAMILIES.append(Family(
     "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
     sphere(range(0, 5)), sphere([5]),
