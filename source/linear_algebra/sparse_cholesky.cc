@@ -109,6 +109,43 @@ namespace dpana
                                            "more than the memory CHOLMOD "
                                            "could allocate"));
       }
+
+
+
+      // The lower triangle of the rows and columns i of K with index[i] >= 0,
+      // renumbered to index[i] (increasing with i), in compressed columns,
+      // without explicit zeros. Column c of the lower triangle holds the
+      // entries (r, c), r >= c, of the rows r: the rows are visited in
+      // increasing order, so each column receives its row indices sorted,
+      // and the matrix is built in two passes without a sort.
+      CholmodMatrix
+      lower_triangle(const dealii::SparseMatrix<double> &K,
+                     const std::vector<int>             &index,
+                     const std::size_t                   n)
+      {
+        const auto for_each_entry = [&](const auto &visit) {
+          for (unsigned int row = 0; row < K.m(); ++row)
+            if (index[row] >= 0)
+              for (auto it = K.begin(row); it != K.end(row); ++it)
+                {
+                  const int c = index[it->column()];
+                  if (c >= 0 && c <= index[row] && it->value() != 0.0)
+                    visit(index[row], c, it->value());
+                }
+        };
+        CholmodMatrix             K_lower(n, n);
+        std::vector<CholmodIndex> next(n + 1, 0);
+        for_each_entry([&](int, const int c, double) { ++next[c + 1]; });
+        for (std::size_t c = 0; c < n; ++c)
+          next[c + 1] += next[c];
+        K_lower.resizeNonZeros(next[n]);
+        std::copy(next.begin(), next.end(), K_lower.outerIndexPtr());
+        for_each_entry([&](const int r, const int c, const double value) {
+          K_lower.innerIndexPtr()[next[c]] = r;
+          K_lower.valuePtr()[next[c]++]    = value;
+        });
+        return K_lower;
+      }
     } // namespace
 
 
@@ -153,14 +190,7 @@ namespace dpana
       lines.clear();
       last.clear();
 
-      std::vector<Eigen::Triplet<double, CholmodIndex>> triplets;
-      triplets.reserve(K.n_nonzero_elements() / 2 + n_rows);
-      for (auto it = K.begin(); it != K.end(); ++it)
-        if (it->column() <= it->row() && it->value() != 0.0)
-          triplets.emplace_back(it->row(), it->column(), it->value());
-      CholmodMatrix K_lower(n_rows, n_rows);
-      K_lower.setFromTriplets(triplets.begin(), triplets.end());
-      factorize_lower(K_lower);
+      factorize_lower(lower_triangle(K, reduced_index, n_rows));
     }
 
 
@@ -225,19 +255,7 @@ namespace dpana
 
       // The reduced matrix: the free rows and columns of the condensed
       // matrix, lower triangle.
-      const unsigned int                                n_free = free.size();
-      std::vector<Eigen::Triplet<double, CholmodIndex>> triplets;
-      triplets.reserve(K.n_nonzero_elements() / 2 + n_free);
-      for (auto it = K.begin(); it != K.end(); ++it)
-        {
-          const int r = reduced_index[it->row()];
-          const int c = reduced_index[it->column()];
-          if (r >= 0 && c >= 0 && c <= r && it->value() != 0.0)
-            triplets.emplace_back(r, c, it->value());
-        }
-      CholmodMatrix K_lower(n_free, n_free);
-      K_lower.setFromTriplets(triplets.begin(), triplets.end());
-      return K_lower;
+      return lower_triangle(K, reduced_index, free.size());
     }
 
 
