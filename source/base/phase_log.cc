@@ -84,13 +84,21 @@ namespace dpana
 
 
 
+  void
+  PhaseLog::add(const std::string &phase, const double seconds)
+  {
+    added[phase] += seconds;
+  }
+
+
+
   std::map<std::string, double>
   PhaseLog::timings() const
   {
-    std::map<std::string, double> t;
+    std::map<std::string, double> t = added;
     for (const auto &[name, s] :
          timer.get_summary_data(dealii::TimerOutput::total_wall_time))
-      t[name] = s;
+      t[name] += s;
     return t;
   }
 

@@ -9,8 +9,10 @@
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 
@@ -41,23 +43,31 @@ namespace dpana
     {
       mesh_file = prm.get("Mesh file");
       parameter = path + " / Mesh file";
-      read_boundary_names();
+      read_mesh();
     }
 
 
 
-    // Checks the sections of the file and reads its boundary names.
+    // Reads and checks the whole file, once, before any work is done; the
+    // time it takes is counted in the assembly phase (reading_time()).
     template <int dim>
     void
-    GmshFile<dim>::read_boundary_names()
+    GmshFile<dim>::read_mesh()
     {
+      const auto        start = std::chrono::steady_clock::now();
       const std::string error = parameter + ": mesh file '" + mesh_file;
       std::ifstream     in(mesh_file);
       if (mesh_file.empty() || !in)
         throw InputError(error + "' not found");
-      const GmshOutline outline = read_gmsh_sections(in, dim, error);
-      names                     = outline.boundary_names;
-      n_cells                   = outline.n_cells;
+      mesh = read_gmsh_mesh(in, dim, error);
+      if (mesh.n_cells() == 0)
+        throw InputError(error + "' must contain " +
+                         (dim == 2 ? "triangles" : "tetrahedra") + " only");
+      names   = mesh.boundary_names;
+      n_cells = mesh.n_cells();
+      seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
       if (names.empty())
         throw InputError(error +
                          "' names no boundary: give every boundary a "
@@ -95,32 +105,104 @@ namespace dpana
 
 
 
+    namespace
+    {
+      template <int dim>
+      std::vector<dealii::Point<dim>>
+      vertices_of(const GmshMesh &mesh)
+      {
+        std::vector<dealii::Point<dim>> vertices(mesh.nodes.size());
+        for (std::size_t i = 0; i < vertices.size(); ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            vertices[i][d] = mesh.nodes[i][d];
+        return vertices;
+      }
+
+
+
+      // The cells, their material ids the physical tags.
+      template <int dim>
+      std::vector<dealii::CellData<dim>>
+      cells_of(const GmshMesh &mesh)
+      {
+        std::vector<dealii::CellData<dim>> cells(mesh.n_cells());
+        for (std::size_t c = 0; c < cells.size(); ++c)
+          {
+            const auto first = mesh.cell_nodes.begin() + (dim + 1) * c;
+            cells[c].vertices.assign(first, first + dim + 1);
+            cells[c].material_id = mesh.cell_tags[c];
+          }
+        return cells;
+      }
+
+
+
+      // The boundary elements, their boundary ids the physical tags: lines
+      // in 2D, triangles in 3D.
+      template <int dim>
+      dealii::SubCellData
+      boundary_of(const GmshMesh &mesh)
+      {
+        dealii::SubCellData boundary;
+        for (std::size_t f = 0; f < mesh.face_tags.size(); ++f)
+          {
+            const auto first = mesh.face_nodes.begin() + dim * f;
+            if constexpr (dim == 2)
+              {
+                auto &line = boundary.boundary_lines.emplace_back();
+                std::copy(first, first + 2, line.vertices.begin());
+                line.boundary_id = mesh.face_tags[f];
+              }
+            else
+              {
+                auto &triangle = boundary.boundary_quads.emplace_back();
+                triangle.vertices.assign(first, first + 3);
+                triangle.boundary_id = mesh.face_tags[f];
+              }
+          }
+        return boundary;
+      }
+    } // namespace
+
+
+
+    // The mesh read: the same vertices, cells, material ids and boundary
+    // ids as GridIn::read_msh gives, and the same clean-up before the
+    // triangulation is built: unused nodes are dropped and cells of
+    // negative measure turned.
     template <int dim>
     void
     GmshFile<dim>::create_triangulation(
       dealii::Triangulation<dim> &tria,
       const unsigned int          n_global_refinements) const
     {
-      const std::string error = parameter + ": mesh file '" + mesh_file;
-      std::ifstream     in(mesh_file);
-      if (!in)
-        throw InputError(error + "' not found");
-      dealii::GridIn<dim> grid_in;
-      grid_in.attach_triangulation(tria);
+      auto                vertices = vertices_of<dim>(mesh);
+      auto                cells    = cells_of<dim>(mesh);
+      dealii::SubCellData boundary = boundary_of<dim>(mesh);
       try
         {
-          grid_in.read_msh(in);
+          dealii::GridTools::delete_unused_vertices(vertices, cells, boundary);
+          dealii::GridTools::invert_cells_with_negative_measure(vertices,
+                                                                cells);
+          tria.create_triangulation(vertices, cells, boundary);
         }
       catch (const std::exception &e)
         {
           throw InputError(
-            error + "' could not be read: " + parameters::one_line_message(e));
+            parameter + ": mesh file '" + mesh_file +
+            "' could not be read: " + parameters::one_line_message(e));
         }
-      if (tria.n_active_cells() == 0 || !tria.all_reference_cells_are_simplex())
-        throw InputError(error + "' must contain " +
-                         (dim == 2 ? "triangles" : "tetrahedra") + " only");
       check_physical_groups(tria);
       tria.refine_global(n_global_refinements);
+    }
+
+
+
+    template <int dim>
+    double
+    GmshFile<dim>::reading_time() const
+    {
+      return seconds;
     }
 
 

@@ -8,11 +8,11 @@
 #include <deal.II/base/utilities.h>
 
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <sstream>
 #include <unordered_map>
 #include <vector>
 
@@ -73,27 +73,27 @@ namespace dpana
         std::vector<std::string>
         words() const
         {
-          std::istringstream       s(text);
           std::vector<std::string> w;
-          std::string              word;
-          while (s >> word)
-            w.push_back(word);
+          for_each_word([&w](const char *begin, const char *end) {
+            w.emplace_back(begin, end);
+          });
           return w;
         }
 
-        // The current line as @p n integers (any number if n == 0).
-        std::vector<long long>
-        integers(const std::size_t n, const std::string &what) const
+        // The current line as @p n integers (any number if n == 0), in a
+        // buffer that the next call overwrites (the elements and nodes of
+        // a large mesh are read without an allocation per line).
+        const std::vector<long long> &
+        integers(const std::size_t n, const std::string &what)
         {
-          const auto             w = words();
-          std::vector<long long> values;
-          for (const std::string &word : w)
-            {
-              long long v;
-              if (!to_integer(word, v))
-                fail("expected " + what + ", got " + parameters::quote(text));
-              values.push_back(v);
-            }
+          values.clear();
+          for_each_word([&](const char *begin, const char *end) {
+            word.assign(begin, end);
+            long long v;
+            if (!to_integer(word, v))
+              fail("expected " + what + ", got " + parameters::quote(text));
+            values.push_back(v);
+          });
           if ((n != 0 && values.size() != n) || values.empty())
             fail("expected " + what + ", got " + parameters::quote(text));
           return values;
@@ -116,20 +116,52 @@ namespace dpana
         unsigned int number = 0;
 
       private:
-        std::istream     &in;
-        const std::string error;
-        std::string       text;
+        std::istream          &in;
+        const std::string      error;
+        std::string            text, word;
+        std::vector<long long> values;
+
+        template <typename Visit>
+        void
+        for_each_word(const Visit &visit) const
+        {
+          const char *p = text.data(), *end = p + text.size();
+          while (p != end)
+            {
+              while (p != end && std::isspace(static_cast<unsigned char>(*p)))
+                ++p;
+              const char *begin = p;
+              while (p != end && !std::isspace(static_cast<unsigned char>(*p)))
+                ++p;
+              if (p != begin)
+                visit(begin, p);
+            }
+        }
       };
 
 
 
-      // A node: its coordinates and the line that defines it.
-      struct Node
+      // The nodes read so far: their coordinates in the order of the file,
+      // the line that defines each, and the position of each tag.
+      struct Nodes
       {
-        std::array<double, 3> x;
-        unsigned int          line;
+        std::vector<std::array<double, 3>>          x;
+        std::vector<unsigned int>                   line;
+        std::unordered_map<long long, unsigned int> position;
+
+        // The position of the node @p tag, or -1 if no node has it.
+        long long
+        find(const long long tag) const
+        {
+          const auto p = position.find(tag);
+          return p == position.end() ? -1 : static_cast<long long>(p->second);
+        }
       };
-      using Nodes = std::unordered_map<long long, Node>;
+
+      // The physical group of each entity of a 4.1 file, by dimension:
+      // entity tag -> physical tag.
+      using EntityTags =
+        std::array<std::unordered_map<long long, long long>, 4>;
 
 
 
@@ -198,25 +230,33 @@ namespace dpana
           lines.fail("node tag " + std::to_string(tag) +
                      " is not positive or outside the range the section "
                      "declares");
-        std::istringstream    s(coordinates);
         std::array<double, 3> x;
+        const char           *p = coordinates.c_str();
         std::string           word;
         for (double &xi : x)
           {
-            char *end;
-            if (!(s >> word))
+            while (std::isspace(static_cast<unsigned char>(*p)))
+              ++p;
+            const char *begin = p;
+            while (*p != '\0' && !std::isspace(static_cast<unsigned char>(*p)))
+              ++p;
+            if (p == begin)
               lines.fail("node " + std::to_string(tag) +
                          " has fewer than 3 coordinates");
+            word.assign(begin, p);
+            char *end;
             xi = std::strtod(word.c_str(), &end);
             if (*end != '\0' || !std::isfinite(xi))
               lines.fail("coordinate " + parameters::quote(word) + " of node " +
                          std::to_string(tag) + " is not a finite number");
           }
-        const auto [it, inserted] = nodes.emplace(tag, Node{x, lines.number});
+        const auto [it, inserted] = nodes.position.emplace(tag, nodes.x.size());
         if (!inserted)
           lines.fail("node tag " + std::to_string(tag) +
                      " is given twice (first on line " +
-                     std::to_string(it->second.line) + ")");
+                     std::to_string(nodes.line[it->second]) + ")");
+        nodes.x.push_back(x);
+        nodes.line.push_back(lines.number);
       }
 
 
@@ -230,6 +270,8 @@ namespace dpana
         if (!v41)
           {
             const long long n = lines.integers(1, "the number of nodes")[0];
+            if (n > 0)
+              nodes.position.reserve(n);
             for (long long i = 0; i < n; ++i)
               {
                 lines.next_in(section);
@@ -248,13 +290,15 @@ namespace dpana
           }
         else
           {
-            const auto head =
+            const std::vector<long long> head =
               lines.integers(4, "'blocks nodes min_tag max_tag' (format 4.1)");
+            if (head[1] > 0)
+              nodes.position.reserve(head[1]);
             long long n_read = 0;
             for (long long b = 0; b < head[0]; ++b)
               {
                 lines.next_in(section);
-                const auto block = lines.integers(
+                const std::vector<long long> block = lines.integers(
                   4, "a block head 'dimension entity parametric nodes'");
                 std::vector<long long> tags;
                 for (long long i = 0; i < block[3]; ++i)
@@ -280,15 +324,32 @@ namespace dpana
 
 
 
-      // The number of nodes of the element types GridIn reads; 0 for the
-      // others.
+      // The number of nodes of the linear element types of gmsh (points,
+      // lines, triangles, quadrilaterals, tetrahedra, hexahedra, prisms,
+      // pyramids); 0 for the others.
       std::size_t
       nodes_of_type(const long long type)
       {
-        const std::map<long long, std::size_t> n = {
-          {1, 2}, {2, 3}, {3, 4}, {4, 4}, {5, 8}, {6, 6}, {7, 5}, {15, 1}};
-        const auto p = n.find(type);
-        return p == n.end() ? 0 : p->second;
+        switch (type)
+          {
+            case 15:
+              return 1;
+            case 1:
+              return 2;
+            case 2:
+              return 3;
+            case 3:
+            case 4:
+              return 4;
+            case 5:
+              return 8;
+            case 6:
+              return 6;
+            case 7:
+              return 5;
+            default:
+              return 0;
+          }
       }
 
 
@@ -296,19 +357,20 @@ namespace dpana
       // Zero measure of a triangle (2D) or tetrahedron (3D), relative to
       // its longest edge.
       bool
-      degenerate(const std::vector<const Node *> &p, const unsigned int dim)
+      degenerate(const std::array<const std::array<double, 3> *, 4> &p,
+                 const unsigned int                                  dim)
       {
         std::array<std::array<double, 3>, 3> e;
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int d = 0; d < 3; ++d)
-            e[k][d] = d < dim ? p[k + 1]->x[d] - p[0]->x[d] : 0.;
+            e[k][d] = d < dim ? (*p[k + 1])[d] - (*p[0])[d] : 0.;
         double h = 0;
         for (unsigned int i = 0; i <= dim; ++i)
           for (unsigned int j = 0; j < i; ++j)
             {
               double l2 = 0;
               for (unsigned int d = 0; d < dim; ++d)
-                l2 += std::pow(p[i]->x[d] - p[j]->x[d], 2);
+                l2 += std::pow((*p[i])[d] - (*p[j])[d], 2);
               h = std::max(h, std::sqrt(l2));
             }
         const double measure =
@@ -321,56 +383,104 @@ namespace dpana
 
 
 
-      // One element: its node count (for the types GridIn reads), its
-      // nodes, and the measure of the cells. True if it is a cell.
-      bool
-      check_element(const Lines                  &lines,
-                    const Nodes                  &nodes,
-                    const long long               tag,
-                    const long long               type,
-                    const std::vector<long long> &node_tags,
-                    const unsigned int            dim)
+      // The elements read so far into the mesh, with what they need to be
+      // checked: the nodes, the dimension and the start of the errors that
+      // name no line.
+      struct ElementReader
       {
-        const std::string element = "element " + std::to_string(tag);
-        const std::size_t n       = nodes_of_type(type);
-        if (n == 0)
-          return false;
-        if (node_tags.size() != n)
-          lines.fail(element + " of type " + std::to_string(type) + " has " +
-                     std::to_string(node_tags.size()) + " nodes instead of " +
-                     std::to_string(n));
-        std::vector<const Node *> p;
-        for (const long long t : node_tags)
-          {
-            const auto node = nodes.find(t);
-            if (node == nodes.end())
-              lines.fail(element + " refers to node " + std::to_string(t) +
-                         ", which $Nodes does not define");
-            p.push_back(&node->second);
-          }
-        const long long cell_type = dim == 2 ? 2 : 4;
-        if (type != cell_type)
-          return false;
-        if (degenerate(p, dim))
-          lines.fail(element + " (a " +
-                     (dim == 2 ? "triangle) has zero area" :
-                                 "tetrahedron) has zero volume") +
-                     ": a degenerate cell");
-        return true;
-      }
+        Lines             &lines;
+        const Nodes       &nodes;
+        const unsigned int dim;
+        const std::string &error;
+        GmshMesh          &mesh;
+
+        // One element of gmsh type @p type with the nodes @p node_tags and
+        // the physical tag @p physical: checked, and kept if it is a cell or
+        // a boundary element of this dimension.
+        void
+        add(const long long   tag,
+            const long long   type,
+            const long long  *node_tags,
+            const std::size_t n_nodes,
+            const long long   physical)
+        {
+          const std::string element = "element " + std::to_string(tag);
+          const std::size_t n       = nodes_of_type(type);
+          if (n == 0)
+            lines.fail(element + " is of gmsh type " + std::to_string(type) +
+                       ", which dpana does not read (it reads points, lines, "
+                       "triangles and tetrahedra of the first order)");
+          if (n_nodes != n)
+            lines.fail(element + " of type " + std::to_string(type) + " has " +
+                       std::to_string(n_nodes) + " nodes instead of " +
+                       std::to_string(n));
+          std::array<unsigned int, 8> position;
+          for (std::size_t k = 0; k < n; ++k)
+            {
+              const long long i = nodes.find(node_tags[k]);
+              if (i < 0)
+                lines.fail(element + " refers to node " +
+                           std::to_string(node_tags[k]) +
+                           ", which $Nodes does not define");
+              position[k] = i;
+            }
+          const long long cell_type = dim == 2 ? 2 : 4, face_type = dim - 1;
+          if (type == cell_type)
+            add_cell(element, position, physical);
+          else if (type == face_type)
+            {
+              mesh.face_nodes.insert(mesh.face_nodes.end(),
+                                     position.begin(),
+                                     position.begin() + dim);
+              mesh.face_tags.push_back(id_of(physical));
+            }
+          else if (type == 3 || type > 4 || (type == 4 && dim == 2))
+            throw InputError(error + "' must contain " +
+                             (dim == 2 ? "triangles" : "tetrahedra") + " only");
+        }
+
+      private:
+        void
+        add_cell(const std::string                 &element,
+                 const std::array<unsigned int, 8> &position,
+                 const long long                    physical)
+        {
+          std::array<const std::array<double, 3> *, 4> p;
+          for (unsigned int k = 0; k <= dim; ++k)
+            p[k] = &nodes.x[position[k]];
+          if (degenerate(p, dim))
+            lines.fail(element + " (a " +
+                       (dim == 2 ? "triangle) has zero area" :
+                                   "tetrahedron) has zero volume") +
+                       ": a degenerate cell");
+          mesh.cell_nodes.insert(mesh.cell_nodes.end(),
+                                 position.begin(),
+                                 position.begin() + dim + 1);
+          mesh.cell_tags.push_back(id_of(physical));
+        }
+
+        // A physical tag as a material or boundary id.
+        unsigned int
+        id_of(const long long physical) const
+        {
+          if (physical < 0 ||
+              physical >= dealii::numbers::internal_face_boundary_id)
+            lines.fail("physical tag " + std::to_string(physical) +
+                       " is negative or too large for an id");
+          return physical;
+        }
+      };
 
 
 
-      // Returns the number of cells.
-      unsigned long long
-      read_elements(Lines             &lines,
-                    const bool         v41,
-                    const Nodes       &nodes,
-                    const unsigned int dim)
+      void
+      read_elements(Lines            &lines,
+                    const bool        v41,
+                    const EntityTags &entity_tags,
+                    ElementReader    &reader)
       {
         const std::string section = "$Elements";
         lines.next_in(section);
-        unsigned long long n_cells = 0;
         if (!v41)
           {
             const long long n = lines.integers(1, "the number of elements")[0];
@@ -379,41 +489,43 @@ namespace dpana
             for (long long i = 0; i < n; ++i)
               {
                 lines.next_in(section);
-                const auto v = lines.integers(0, layout);
+                const auto &v = lines.integers(0, layout);
                 if (v.size() < 3 || v[2] < 0 ||
                     v.size() < 3 + static_cast<std::size_t>(v[2]))
                   lines.fail("expected " + layout + ", got " +
                              parameters::quote(lines.line()));
-                n_cells += check_element(lines,
-                                         nodes,
-                                         v[0],
-                                         v[1],
-                                         {v.begin() + 3 + v[2], v.end()},
-                                         dim);
+                const std::size_t first = 3 + v[2];
+                reader.add(v[0],
+                           v[1],
+                           v.data() + first,
+                           v.size() - first,
+                           v[2] > 0 ? v[3] : 0);
               }
           }
         else
           {
-            const auto head =
+            const std::vector<long long> head =
               lines.integers(4,
                              "'blocks elements min_tag max_tag' (format 4.1)");
             long long n_read = 0;
             for (long long b = 0; b < head[0]; ++b)
               {
                 lines.next_in(section);
-                const auto block = lines.integers(
+                const std::vector<long long> block = lines.integers(
                   4, "a block head 'dimension entity type elements'");
+                if (block[0] < 0 || block[0] > 3)
+                  lines.fail("a block of elements of an entity of dimension " +
+                             std::to_string(block[0]));
+                const auto      entity = entity_tags[block[0]].find(block[1]);
+                const long long physical =
+                  entity == entity_tags[block[0]].end() ? 0 : entity->second;
                 for (long long i = 0; i < block[3]; ++i)
                   {
                     lines.next_in(section);
-                    const auto v =
+                    const auto &v =
                       lines.integers(0, "an element 'tag nodes...'");
-                    n_cells += check_element(lines,
-                                             nodes,
-                                             v[0],
-                                             block[2],
-                                             {v.begin() + 1, v.end()},
-                                             dim);
+                    reader.add(
+                      v[0], block[2], v.data() + 1, v.size() - 1, physical);
                   }
                 n_read += block[3];
               }
@@ -424,23 +536,23 @@ namespace dpana
           }
         lines.next_in(section);
         lines.expect("$EndElements");
-        return n_cells;
       }
 
 
 
-      // $Entities of format 4.1, which GridIn reads number by number: the
-      // counts of points, curves, surfaces and volumes, then one line per
-      // entity, "tag x y z n_physical physical..." for a point and "tag
-      // box(6) n_physical physical... n_bounding bounding..." for the
-      // others, every word a number.
-      void
+      // $Entities of format 4.1: the counts of points, curves, surfaces and
+      // volumes, then one line per entity, "tag x y z n_physical
+      // physical..." for a point and "tag box(6) n_physical physical...
+      // n_bounding bounding..." for the others, every word a number. Returns
+      // the physical group of each entity (none: not in the map).
+      EntityTags
       read_entities(Lines &lines)
       {
         const std::string section = "$Entities";
         lines.next_in(section);
-        const auto counts = lines.integers(
+        const std::vector<long long> counts = lines.integers(
           4, "'points curves surfaces volumes' (format 4.1 $Entities)");
+        EntityTags tags;
         for (unsigned int kind = 0; kind < 4; ++kind)
           for (long long i = 0; i < counts[kind]; ++i)
             {
@@ -454,20 +566,34 @@ namespace dpana
                   std::strtod(word.c_str(), &end);
                   ok = ok && *end == '\0';
                 }
-              long long n_physical = -1, n_bounding = 0;
-              ok = ok && to_integer(w[n_coordinates + 1], n_physical) &&
+              long long tag = 0, n_physical = -1, n_bounding = 0;
+              ok = ok && to_integer(w[0], tag) &&
+                   to_integer(w[n_coordinates + 1], n_physical) &&
                    n_physical >= 0;
               const std::size_t next = n_coordinates + 2 + n_physical;
               if (ok && kind > 0)
                 ok = w.size() > next && to_integer(w[next], n_bounding) &&
                      n_bounding >= 0;
+              long long physical = 0;
+              for (std::size_t k = n_coordinates + 2;
+                   ok && k < next && k < w.size();
+                   ++k)
+                ok = to_integer(w[k], physical);
               if (!ok || w.size() != next + (kind > 0 ? 1 + n_bounding : 0))
                 lines.fail("expected an entity of dimension " +
                            std::to_string(kind) + ", got " +
                            parameters::quote(lines.line()));
+              if (n_physical > 1)
+                lines.fail("entity " + std::to_string(tag) + " of dimension " +
+                           std::to_string(kind) + " is in " +
+                           std::to_string(n_physical) +
+                           " physical groups; dpana reads one");
+              if (n_physical == 1)
+                tags[kind][tag] = physical;
             }
         lines.next_in(section);
         lines.expect("$EndEntities");
+        return tags;
       }
 
 
@@ -485,16 +611,18 @@ namespace dpana
 
 
 
-    GmshOutline
-    read_gmsh_sections(std::istream      &in,
-                       const unsigned int dim,
-                       const std::string &error)
+    GmshMesh
+    read_gmsh_mesh(std::istream      &in,
+                   const unsigned int dim,
+                   const std::string &error)
     {
       Lines lines(in, error);
       bool  format_seen = false, v41 = false, nodes_seen = false,
            elements_seen = false;
-      Nodes       nodes;
-      GmshOutline outline;
+      Nodes         nodes;
+      EntityTags    entity_tags;
+      GmshMesh      mesh;
+      ElementReader reader{lines, nodes, dim, error, mesh};
       while (lines.next())
         {
           const std::string line = dealii::Utilities::trim(lines.line());
@@ -504,18 +632,18 @@ namespace dpana
                    line.rfind("$End", 0) != 0)
             lines.fail(line + " comes before $MeshFormat");
           else if (line == "$PhysicalNames")
-            read_physical_names(lines, dim, outline.boundary_names);
+            read_physical_names(lines, dim, mesh.boundary_names);
           else if (line == "$Nodes")
             nodes = read_nodes(lines, v41), nodes_seen = true;
           else if (line == "$Elements")
             {
               if (!nodes_seen)
                 lines.fail("$Elements comes before $Nodes");
-              outline.n_cells = read_elements(lines, v41, nodes, dim);
-              elements_seen   = true;
+              read_elements(lines, v41, entity_tags, reader);
+              elements_seen = true;
             }
           else if (line == "$Entities" && v41)
-            read_entities(lines);
+            entity_tags = read_entities(lines);
           else if (line.rfind("$", 0) == 0 && line.rfind("$End", 0) != 0)
             skip_section(lines, line);
         }
@@ -525,7 +653,8 @@ namespace dpana
       if (!nodes_seen || !elements_seen)
         throw InputError(error + "' has no " +
                          (nodes_seen ? "$Elements" : "$Nodes") + " section");
-      return outline;
+      mesh.nodes = std::move(nodes.x);
+      return mesh;
     }
   } // namespace geometry
 } // namespace dpana

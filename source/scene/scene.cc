@@ -160,6 +160,7 @@ namespace dpana
         {
           const auto phase =
             phase_log.phase("assembly", "assembling " + body->name());
+          phase_log.add("assembly", body->mesh_reading_time());
           body->create_mesh();
           // The distributed assembly of the MPI route: the cells split over
           // the ranks (a body needs at least one cell per rank).

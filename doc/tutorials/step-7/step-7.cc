@@ -367,8 +367,8 @@ namespace step7
     const std::string mesh = "output/sphere.msh";
     // The mesh is made at every run from the .geo file, so that the file
     // in the repository is the only description of the geometry: -3 makes
-    // the volume mesh, msh22 is the ASCII format 2.2 that deal.II's GridIn
-    // reads, and gmsh's own log goes to output/gmsh.log.
+    // the volume mesh, msh22 is the ASCII format 2.2 that dpana reads (as does
+    // deal.II's GridIn), and gmsh's own log goes to output/gmsh.log.
     if (std::system(("gmsh -3 " + geo + " -format msh22 -o " + mesh +
                      " > output/gmsh.log 2>&1")
                       .c_str()) != 0)

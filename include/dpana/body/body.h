@@ -168,6 +168,17 @@ namespace dpana
     geometry_description() const;
 
     /**
+     * The wall time of reading the body's mesh file while the parameters
+     * were read (s; 0 for a generated mesh), which the scene counts in the
+     * assembly phase.
+     */
+    double
+    mesh_reading_time() const
+    {
+      return geometry->reading_time();
+    }
+
+    /**
      * The components of the body (its material, kinematic conditions and
      * loads), for programs that set them up themselves, and its name.
      */

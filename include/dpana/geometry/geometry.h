@@ -117,6 +117,16 @@ namespace dpana
       std::string
       description() const;
 
+      /**
+       * The wall time of reading the mesh file while the parameters were
+       * read (s; 0 for a generated mesh).
+       */
+      double
+      reading_time() const
+      {
+        return shape->reading_time();
+      }
+
     private:
       std::string                 type_name;
       unsigned int                n_global_refinements;

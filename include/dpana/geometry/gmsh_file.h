@@ -4,6 +4,7 @@
 #ifndef dpana_geometry_gmsh_file_h
 #define dpana_geometry_gmsh_file_h
 
+#include <dpana/geometry/gmsh_sections.h>
 #include <dpana/geometry/shape.h>
 
 namespace dpana
@@ -15,19 +16,17 @@ namespace dpana
      * (2D) or tetrahedra (3D): the type `gmsh`, `subsection Gmsh`, entry
      * Mesh file. Lengths in the file are mm.
      *
-     * deal.II's GridIn::read_msh (stream overload, the built-in ASCII reader
-     * of the formats 2.2 and 4.1) gives every boundary face the physical tag
-     * of its boundary element as boundary id, and id 0 to the boundary faces
-     * that belong to no physical group. The names of the tags come from the
-     * $PhysicalNames section, which GridIn skips; it is read here, already
-     * in parse_parameters(), by read_gmsh_sections(), which also checks the
-     * sections GridIn reads without checking them (a file GridIn would
-     * misread, a node tag given twice, a cell of zero measure), so that a
+     * The file is read once, already in parse_parameters(), by
+     * read_gmsh_mesh(), which checks what a reader of the format usually
+     * takes for granted (a file of one version written in the layout of
+     * another, a node tag given twice, a cell of zero measure), so that a
      * bad file, a missing file or an unnamed boundary is reported on one
-     * line before any work is done. An error GridIn reports itself (e.g. an
-     * element type it does not know) is given with GridIn's reason. The
-     * boundary names are these physical names (of the groups of dimension dim -
-     * 1); a boundary face in no named group is an input error. The global
+     * line before any work is done. create_triangulation() builds the mesh
+     * from what was read, as deal.II's GridIn::read_msh would: every
+     * boundary face gets the physical tag of its boundary element as
+     * boundary id, and id 0 if it belongs to no physical group. The
+     * boundary names are the $PhysicalNames of the groups of dimension dim -
+     * 1; a boundary face in no named group is an input error. The global
      * refinements act on the simplices read.
      */
     template <int dim>
@@ -64,14 +63,23 @@ namespace dpana
       std::string
       description() const override;
 
+      /**
+       * The wall time of reading and checking the file in
+       * parse_parameters() (s).
+       */
+      double
+      reading_time() const override;
+
     private:
       std::string                                       mesh_file;
       std::string                                       parameter;
       std::map<std::string, dealii::types::boundary_id> names;
       unsigned long long                                n_cells = 0;
+      GmshMesh                                          mesh;
+      double                                            seconds = 0;
 
       void
-      read_boundary_names();
+      read_mesh();
 
       void
       check_physical_groups(const dealii::Triangulation<dim> &tria) const;

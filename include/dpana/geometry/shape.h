@@ -77,6 +77,18 @@ namespace dpana
        */
       virtual std::string
       description() const = 0;
+
+      /**
+       * The wall time spent in parse_parameters() reading input files of
+       * the mesh (s), which the scene counts in the assembly phase with the
+       * building of the mesh; 0 for the shapes generated in
+       * create_triangulation().
+       */
+      virtual double
+      reading_time() const
+      {
+        return 0.0;
+      }
     };
 
 

@@ -27,9 +27,11 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe.h>
 
+#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <set>
 #include <string>
@@ -583,6 +585,66 @@ TEST(Geometry, GmshTetrahedraFormat41)
       expect_relative(m.boundary_measure.at(3), 8.);
       EXPECT_EQ(m.boundary_measure.size(), 3u);
     }
+}
+
+
+
+// dpana reads gmsh files itself, once, and builds the triangulation from
+// what it read. The independent reference is deal.II's own reader,
+// GridIn::read_msh, on the same file: the same vertices in the same order,
+// the same cells with the same vertices (in the same orientation), the same
+// material ids, and the same boundary id on every boundary face. Files of
+// both formats, in 2D and 3D, written by hand and by gmsh.
+template <int dim>
+void
+expect_same_mesh_as_grid_in(const std::string &file)
+{
+  SCOPED_TRACE(file);
+  const auto                 geometry = make_geometry<dim>(gmsh(file));
+  dealii::Triangulation<dim> ours, reference;
+  geometry.create_triangulation(ours);
+  dealii::GridIn<dim> grid_in;
+  grid_in.attach_triangulation(reference);
+  std::ifstream in(file);
+  grid_in.read_msh(in);
+
+  ASSERT_EQ(ours.n_vertices(), reference.n_vertices());
+  for (unsigned int v = 0; v < ours.n_vertices(); ++v)
+    EXPECT_EQ(ours.get_vertices()[v], reference.get_vertices()[v]) << v;
+  ASSERT_EQ(ours.n_active_cells(), reference.n_active_cells());
+  auto c = reference.begin_active();
+  for (const auto &cell : ours.active_cell_iterators())
+    {
+      EXPECT_EQ(cell->material_id(), c->material_id());
+      for (const unsigned int v : cell->vertex_indices())
+        EXPECT_EQ(cell->vertex_index(v), c->vertex_index(v));
+      for (const unsigned int f : cell->face_indices())
+        {
+          EXPECT_EQ(cell->face(f)->at_boundary(), c->face(f)->at_boundary());
+          if (cell->face(f)->at_boundary())
+            {
+              EXPECT_EQ(cell->face(f)->boundary_id(),
+                        c->face(f)->boundary_id());
+            }
+        }
+      ++c;
+    }
+}
+
+TEST(Geometry, GmshMeshIsTheMeshOfGridIn)
+{
+  for (const std::string file : {"rectangle_2x1_v22.msh",
+                                 "rectangle_2x1_v41.msh",
+                                 "plate_with_hole_v22.msh",
+                                 "plate_with_hole_v41.msh",
+                                 "../prm/contact_hertz_ratio_graded_block."
+                                 "files/hertz_block_L0_rho17.msh"})
+    expect_same_mesh_as_grid_in<2>(data_dir() + file);
+  for (const std::string file :
+       {"cube_v22.msh",
+        "column_v41.msh",
+        "../prm/contact_hertz_sphere_rigid.files/hertz_sphere_coarse.msh"})
+    expect_same_mesh_as_grid_in<3>(data_dir() + file);
 }
 
 
