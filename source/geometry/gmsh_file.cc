@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 namespace dpana
 {
@@ -100,7 +102,10 @@ namespace dpana
     std::string
     GmshFile<dim>::description() const
     {
-      return "'" + mesh_file + "'";
+      std::ostringstream s;
+      s << "'" << mesh_file << "' (read in " << std::fixed
+        << std::setprecision(2) << seconds << " s)";
+      return s.str();
     }
 
 

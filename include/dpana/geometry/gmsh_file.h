@@ -58,7 +58,7 @@ namespace dpana
       estimated_size(const unsigned int n_global_refinements) const override;
 
       /**
-       * The file name in quotes.
+       * The file name in quotes and the time its reading took.
        */
       std::string
       description() const override;
