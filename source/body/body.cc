@@ -10,6 +10,7 @@
 
 #include <dpana/base/exceptions.h>
 #include <dpana/body/body.h>
+#include <dpana/body/vertex_sparsity.h>
 
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -202,20 +203,25 @@ namespace dpana
 
     make_constraints();
 
-    // A partitioned body keeps the couplings of its own cells only: the
-    // sparsity pattern has a row for every dof (its start and its diagonal
-    // entry, about 20 bytes a dof with the matrix) but the other entries
-    // of this rank's share of K alone.
-    dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
-    if (n_parts_ > 1)
-      dealii::DoFTools::make_sparsity_pattern(
-        dof_handler_, dsp, constraints_, false, this_part_);
-    else
-      dealii::DoFTools::make_sparsity_pattern(dof_handler_,
-                                              dsp,
-                                              constraints_,
-                                              false);
-    sparsity_pattern.copy_from(dsp);
+    // The couplings of the mesh vertices (vertex_sparsity.h), unless a
+    // constraint ties two vertices. A partitioned body keeps the couplings
+    // of its own cells only: the sparsity pattern has a row for every dof
+    // (its start and its diagonal entry, about 20 bytes a dof with the
+    // matrix) but the other entries of this rank's share of K alone.
+    if (n_parts_ > 1 || !make_vertex_sparsity_pattern<dim>(
+                          tria, dofs_of_vertex, constraints_, sparsity_pattern))
+      {
+        dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+        if (n_parts_ > 1)
+          dealii::DoFTools::make_sparsity_pattern(
+            dof_handler_, dsp, constraints_, false, this_part_);
+        else
+          dealii::DoFTools::make_sparsity_pattern(dof_handler_,
+                                                  dsp,
+                                                  constraints_,
+                                                  false);
+        sparsity_pattern.copy_from(dsp);
+      }
     matrix.reinit(sparsity_pattern);
     rhs.reinit(dof_handler_.n_dofs());
     u.reinit(dof_handler_.n_dofs());
