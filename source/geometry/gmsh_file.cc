@@ -171,10 +171,9 @@ namespace dpana
 
 
 
-    // The mesh read: the same vertices, cells, material ids and boundary
-    // ids as GridIn::read_msh gives, and the same clean-up before the
-    // triangulation is built: unused nodes are dropped and cells of
-    // negative measure turned.
+    // The mesh read: the same cells, material ids and boundary ids as
+    // GridIn::read_msh gives, cells of negative measure turned as it does;
+    // nodes that no cell uses (GridIn keeps them, unused) are dropped.
     template <int dim>
     void
     GmshFile<dim>::create_triangulation(

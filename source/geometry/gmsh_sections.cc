@@ -404,29 +404,32 @@ namespace dpana
             const std::size_t n_nodes,
             const long long   physical)
         {
-          const std::string element = "element " + std::to_string(tag);
-          const std::size_t n       = nodes_of_type(type);
+          // The element's name, made only for an error.
+          const auto element = [tag] {
+            return "element " + std::to_string(tag);
+          };
+          const std::size_t n = nodes_of_type(type);
           if (n == 0)
-            lines.fail(element + " is of gmsh type " + std::to_string(type) +
+            lines.fail(element() + " is of gmsh type " + std::to_string(type) +
                        ", which dpana does not read (it reads points, lines, "
                        "triangles and tetrahedra of the first order)");
           if (n_nodes != n)
-            lines.fail(element + " of type " + std::to_string(type) + " has " +
-                       std::to_string(n_nodes) + " nodes instead of " +
-                       std::to_string(n));
+            lines.fail(element() + " of type " + std::to_string(type) +
+                       " has " + std::to_string(n_nodes) +
+                       " nodes instead of " + std::to_string(n));
           std::array<unsigned int, 8> position;
           for (std::size_t k = 0; k < n; ++k)
             {
               const long long i = nodes.find(node_tags[k]);
               if (i < 0)
-                lines.fail(element + " refers to node " +
+                lines.fail(element() + " refers to node " +
                            std::to_string(node_tags[k]) +
                            ", which $Nodes does not define");
               position[k] = i;
             }
           const long long cell_type = dim == 2 ? 2 : 4, face_type = dim - 1;
           if (type == cell_type)
-            add_cell(element, position, physical);
+            add_cell(tag, position, physical);
           else if (type == face_type)
             {
               mesh.face_nodes.insert(mesh.face_nodes.end(),
@@ -434,14 +437,15 @@ namespace dpana
                                      position.begin() + dim);
               mesh.face_tags.push_back(id_of(physical));
             }
-          else if (type == 3 || type > 4 || (type == 4 && dim == 2))
+          else if (type == 3 || (type >= 5 && type <= 7) ||
+                   (type == 4 && dim == 2))
             throw InputError(error + "' must contain " +
                              (dim == 2 ? "triangles" : "tetrahedra") + " only");
         }
 
       private:
         void
-        add_cell(const std::string                 &element,
+        add_cell(const long long                    tag,
                  const std::array<unsigned int, 8> &position,
                  const long long                    physical)
         {
@@ -449,7 +453,7 @@ namespace dpana
           for (unsigned int k = 0; k <= dim; ++k)
             p[k] = &nodes.x[position[k]];
           if (degenerate(p, dim))
-            lines.fail(element + " (a " +
+            lines.fail("element " + std::to_string(tag) + " (a " +
                        (dim == 2 ? "triangle) has zero area" :
                                    "tetrahedron) has zero volume") +
                        ": a degenerate cell");

@@ -8,16 +8,20 @@ T2 = [(1,2,5),(1,5,4),(2,3,6),(2,6,5)]
 L2 = {1: [(1,2),(2,3)], 2: [(3,6)], 3: [(6,5),(5,4)], 4: [(4,1)]}
 N2 = {1:'bottom', 2:'right', 3:'top', 4:'left'}
 
-def v22(fn, names=True, skip=()):
+def v22(fn, names=True, skip=(), points=False):
+    # points: a physical group of points (dimension 0) on a corner and on a
+    # seventh node that no cell uses (readers drop it).
+    nodes = P2 + [(3, 3)] if points else P2
     out = ['$MeshFormat','2.2 0 8','$EndMeshFormat']
     if names:
-        out += ['$PhysicalNames', str(len(N2)+1)]
+        out += ['$PhysicalNames', str(len(N2)+1+points)]
+        out += ['0 5 "marks"'] if points else []
         out += ['1 %d "%s"' % (t, n) for t, n in N2.items()]
         out += ['2 10 "body"', '$EndPhysicalNames']
-    out += ['$Nodes', str(len(P2))]
-    out += ['%d %g %g 0' % (i+1, x, y) for i, (x, y) in enumerate(P2)]
+    out += ['$Nodes', str(len(nodes))]
+    out += ['%d %g %g 0' % (i+1, x, y) for i, (x, y) in enumerate(nodes)]
     out += ['$EndNodes']
-    el = []
+    el = ['15 2 5 5 1', '15 2 5 6 7'] if points else []
     for t, lines in L2.items():
         if t in skip: continue
         for a, b in lines: el.append('1 2 %d %d %d %d' % (t, t, a, b))
@@ -88,4 +92,5 @@ v22('rectangle_2x1_v22.msh')
 v41('rectangle_2x1_v41.msh')
 v22('rectangle_2x1_no_names.msh', names=False)
 v22('rectangle_2x1_open_side.msh', skip=(2,))
+v22('rectangle_2x1_points.msh', points=True)
 v22_3d('cube_v22.msh')
