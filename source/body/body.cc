@@ -28,6 +28,36 @@
 
 namespace dpana
 {
+  namespace
+  {
+    // The sparsity pattern of K made by deal.II cell by cell, where the
+    // couplings of the mesh vertices (vertex_sparsity.h) do not serve: a
+    // constraint ties two vertices, or the body is partitioned. A
+    // partitioned body keeps the couplings of its own cells only: the
+    // pattern has a row for every dof (its start and its diagonal entry,
+    // about 20 bytes a dof with the matrix) but the other entries of this
+    // rank's share of K alone.
+    template <int dim>
+    void
+    make_cell_sparsity_pattern(
+      const dealii::DoFHandler<dim>           &dofs,
+      const dealii::AffineConstraints<double> &constraints,
+      const unsigned int                       n_parts,
+      const unsigned int                       this_part,
+      dealii::SparsityPattern                 &pattern)
+    {
+      dealii::DynamicSparsityPattern dsp(dofs.n_dofs());
+      if (n_parts > 1)
+        dealii::DoFTools::make_sparsity_pattern(
+          dofs, dsp, constraints, false, this_part);
+      else
+        dealii::DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+      pattern.copy_from(dsp);
+    }
+  } // namespace
+
+
+
   // @sect3{Construction and parameters}
 
   template <int dim>
@@ -203,25 +233,10 @@ namespace dpana
 
     make_constraints();
 
-    // The couplings of the mesh vertices (vertex_sparsity.h), unless a
-    // constraint ties two vertices. A partitioned body keeps the couplings
-    // of its own cells only: the sparsity pattern has a row for every dof
-    // (its start and its diagonal entry, about 20 bytes a dof with the
-    // matrix) but the other entries of this rank's share of K alone.
     if (n_parts_ > 1 || !make_vertex_sparsity_pattern<dim>(
                           tria, dofs_of_vertex, constraints_, sparsity_pattern))
-      {
-        dealii::DynamicSparsityPattern dsp(dof_handler_.n_dofs());
-        if (n_parts_ > 1)
-          dealii::DoFTools::make_sparsity_pattern(
-            dof_handler_, dsp, constraints_, false, this_part_);
-        else
-          dealii::DoFTools::make_sparsity_pattern(dof_handler_,
-                                                  dsp,
-                                                  constraints_,
-                                                  false);
-        sparsity_pattern.copy_from(dsp);
-      }
+      make_cell_sparsity_pattern(
+        dof_handler_, constraints_, n_parts_, this_part_, sparsity_pattern);
     matrix.reinit(sparsity_pattern);
     rhs.reinit(dof_handler_.n_dofs());
     u.reinit(dof_handler_.n_dofs());
