@@ -63,8 +63,8 @@ namespace dpana
           std::sort(first, last);
           const auto unique_end = std::unique(first, last);
           start[v]              = end;
-          end = std::copy(first, unique_end, neighbours.begin() + end) -
-                neighbours.begin();
+          for (auto w = first; w != unique_end; ++w)
+            neighbours[end++] = *w; // end <= w: the rows only move forward
         }
       start[n] = end;
       neighbours.resize(end);

@@ -7,6 +7,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
@@ -158,6 +159,10 @@ namespace dpana
         }
       };
 
+      // The most nodes reserved for from a section's head, which a
+      // damaged file may overstate.
+      constexpr long long max_reserved = 1 << 22;
+
       // The physical group of each entity of a 4.1 file, by dimension:
       // entity tag -> physical tag.
       using EntityTags =
@@ -208,6 +213,9 @@ namespace dpana
             const std::string name = text.substr(first + 1, last - first - 1);
             if (group_dim != static_cast<long long>(dim) - 1)
               continue;
+            if (tag < 0 || tag >= dealii::numbers::internal_face_boundary_id)
+              lines.fail("physical tag " + std::to_string(tag) +
+                         " is negative or too large for an id");
             if (names.count(name) != 0)
               lines.fail("a second boundary named " + parameters::quote(name));
             names[name] = static_cast<dealii::types::boundary_id>(tag);
@@ -270,8 +278,7 @@ namespace dpana
         if (!v41)
           {
             const long long n = lines.integers(1, "the number of nodes")[0];
-            if (n > 0)
-              nodes.position.reserve(n);
+            nodes.position.reserve(std::clamp(n, 0LL, max_reserved));
             for (long long i = 0; i < n; ++i)
               {
                 lines.next_in(section);
@@ -292,14 +299,16 @@ namespace dpana
           {
             const std::vector<long long> head =
               lines.integers(4, "'blocks nodes min_tag max_tag' (format 4.1)");
-            if (head[1] > 0)
-              nodes.position.reserve(head[1]);
+            nodes.position.reserve(std::clamp(head[1], 0LL, max_reserved));
             long long n_read = 0;
             for (long long b = 0; b < head[0]; ++b)
               {
                 lines.next_in(section);
                 const std::vector<long long> block = lines.integers(
                   4, "a block head 'dimension entity parametric nodes'");
+                if (block[3] < 0)
+                  lines.fail("a block of " + std::to_string(block[3]) +
+                             " nodes");
                 std::vector<long long> tags;
                 for (long long i = 0; i < block[3]; ++i)
                   {
@@ -517,6 +526,9 @@ namespace dpana
                 lines.next_in(section);
                 const std::vector<long long> block = lines.integers(
                   4, "a block head 'dimension entity type elements'");
+                if (block[3] < 0)
+                  lines.fail("a block of " + std::to_string(block[3]) +
+                             " elements");
                 if (block[0] < 0 || block[0] > 3)
                   lines.fail("a block of elements of an entity of dimension " +
                              std::to_string(block[0]));
@@ -622,7 +634,13 @@ namespace dpana
     {
       Lines lines(in, error);
       bool  format_seen = false, v41 = false, nodes_seen = false,
-           elements_seen = false;
+           elements_seen = false, entities_seen = false;
+      // The cells refer to the nodes read before them: a second $Nodes,
+      // $Elements or $Entities, or $Entities after $Elements, is refused.
+      const auto once = [&lines](const bool seen, const std::string &section) {
+        if (seen)
+          lines.fail("a second " + section + " section");
+      };
       Nodes         nodes;
       EntityTags    entity_tags;
       GmshMesh      mesh;
@@ -638,16 +656,25 @@ namespace dpana
           else if (line == "$PhysicalNames")
             read_physical_names(lines, dim, mesh.boundary_names);
           else if (line == "$Nodes")
-            nodes = read_nodes(lines, v41), nodes_seen = true;
+            {
+              once(nodes_seen, line);
+              nodes = read_nodes(lines, v41), nodes_seen = true;
+            }
           else if (line == "$Elements")
             {
+              once(elements_seen, line);
               if (!nodes_seen)
                 lines.fail("$Elements comes before $Nodes");
               read_elements(lines, v41, entity_tags, reader);
               elements_seen = true;
             }
           else if (line == "$Entities" && v41)
-            entity_tags = read_entities(lines);
+            {
+              once(entities_seen, line);
+              if (elements_seen)
+                lines.fail("$Entities comes after $Elements");
+              entity_tags = read_entities(lines), entities_seen = true;
+            }
           else if (line.rfind("$", 0) == 0 && line.rfind("$End", 0) != 0)
             skip_section(lines, line);
         }

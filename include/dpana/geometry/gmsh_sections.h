@@ -67,7 +67,14 @@ namespace dpana
      * - a cell (a triangle in 2D, a tetrahedron in 3D) has zero measure:
      *   its area (volume) is below 1e-10 times the square (cube) of its
      *   longest edge;
-     * - an entity of a 4.1 file belongs to more than one physical group.
+     * - an entity of a 4.1 file belongs to more than one physical group;
+     * - a $Nodes, $Elements or $Entities section comes a second time, or
+     *   $Entities after $Elements (the cells refer to the nodes and
+     *   entities read before them), a block has a negative count, or a
+     *   physical tag is negative or too large for an id.
+     *
+     * The counts of the section heads are not trusted for more than
+     * 2^22 nodes of reserved memory.
      *
      * The physical tag of an element is its first tag (2.2) or the physical
      * group of its entity (4.1), 0 if it has none. Points, and lines in 3D,
