@@ -1,21 +1,11 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
-#include <dpana/base/exceptions.h>
-#include <dpana/geometry/gmsh_sections.h>
-#include <dpana/parameters/parameters.h>
-
-#include <deal.II/base/utilities.h>
-
 #include <algorithm>
-#include <array>
-#include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <unordered_map>
-#include <vector>
+
+#include "gmsh_reading.h"
 
 namespace dpana
 {
@@ -23,150 +13,11 @@ namespace dpana
   {
     namespace
     {
-      bool
-      to_integer(const std::string &word, long long &value)
-      {
-        char *end;
-        errno = 0;
-        value = std::strtoll(word.c_str(), &end, 10);
-        return !word.empty() && *end == '\0' && errno == 0;
-      }
-
-
-
-      // The lines of the file, counted, and the one-line errors that name
-      // the current line.
-      class Lines
-      {
-      public:
-        Lines(std::istream &in, const std::string &error)
-          : in(in)
-          , error(error)
-        {
-        }
-
-        // The next line, or false at the end of the file.
-        bool
-        next()
-        {
-          if (!std::getline(in, text))
-            return false;
-          ++number;
-          return true;
-        }
-
-        // The next line, which must exist inside section @p section.
-        void
-        next_in(const std::string &section)
-        {
-          if (!next())
-            fail("the file ends inside " + section);
-        }
-
-        [[noreturn]] void
-        fail(const std::string &what) const
-        {
-          throw InputError(error + "', line " + std::to_string(number) + ": " +
-                           what);
-        }
-
-        // The whitespace-separated words of the current line.
-        std::vector<std::string>
-        words() const
-        {
-          std::vector<std::string> w;
-          for_each_word([&w](const char *begin, const char *end) {
-            w.emplace_back(begin, end);
-          });
-          return w;
-        }
-
-        // The current line as @p n integers (any number if n == 0), in a
-        // buffer that the next call overwrites (the elements and nodes of
-        // a large mesh are read without an allocation per line).
-        const std::vector<long long> &
-        integers(const std::size_t n, const std::string &what)
-        {
-          values.clear();
-          for_each_word([&](const char *begin, const char *end) {
-            word.assign(begin, end);
-            long long v;
-            if (!to_integer(word, v))
-              fail("expected " + what + ", got " + parameters::quote(text));
-            values.push_back(v);
-          });
-          if ((n != 0 && values.size() != n) || values.empty())
-            fail("expected " + what + ", got " + parameters::quote(text));
-          return values;
-        }
-
-        // The current line must be @p marker.
-        void
-        expect(const std::string &marker) const
-        {
-          if (dealii::Utilities::trim(text) != marker)
-            fail("expected " + marker + ", got " + parameters::quote(text));
-        }
-
-        const std::string &
-        line() const
-        {
-          return text;
-        }
-
-        unsigned int number = 0;
-
-      private:
-        std::istream          &in;
-        const std::string      error;
-        std::string            text, word;
-        std::vector<long long> values;
-
-        template <typename Visit>
-        void
-        for_each_word(const Visit &visit) const
-        {
-          const char *p = text.data(), *end = p + text.size();
-          while (p != end)
-            {
-              while (p != end && std::isspace(static_cast<unsigned char>(*p)))
-                ++p;
-              const char *begin = p;
-              while (p != end && !std::isspace(static_cast<unsigned char>(*p)))
-                ++p;
-              if (p != begin)
-                visit(begin, p);
-            }
-        }
-      };
-
-
-
-      // The nodes read so far: their coordinates in the order of the file,
-      // the line that defines each, and the position of each tag.
-      struct Nodes
-      {
-        std::vector<std::array<double, 3>>          x;
-        std::vector<unsigned int>                   line;
-        std::unordered_map<long long, unsigned int> position;
-
-        // The position of the node @p tag, or -1 if no node has it.
-        long long
-        find(const long long tag) const
-        {
-          const auto p = position.find(tag);
-          return p == position.end() ? -1 : static_cast<long long>(p->second);
-        }
-      };
+      using namespace gmsh_reading;
 
       // The most nodes reserved for from a section's head, which a
       // damaged file may overstate.
       constexpr long long max_reserved = 1 << 22;
-
-      // The physical group of each entity of a 4.1 file, by dimension:
-      // entity tag -> physical tag.
-      using EntityTags =
-        std::array<std::unordered_map<long long, long long>, 4>;
 
 
 
@@ -304,11 +155,8 @@ namespace dpana
             for (long long b = 0; b < head[0]; ++b)
               {
                 lines.next_in(section);
-                const std::vector<long long> block = lines.integers(
-                  4, "a block head 'dimension entity parametric nodes'");
-                if (block[3] < 0)
-                  lines.fail("a block of " + std::to_string(block[3]) +
-                             " nodes");
+                const std::vector<long long> block = lines.block_head(
+                  "a block head 'dimension entity parametric nodes'", "nodes");
                 std::vector<long long> tags;
                 for (long long i = 0; i < block[3]; ++i)
                   {
@@ -322,236 +170,11 @@ namespace dpana
                   }
                 n_read += block[3];
               }
-            if (n_read != head[1])
-              lines.fail("the blocks of $Nodes hold " + std::to_string(n_read) +
-                         " nodes, its head says " + std::to_string(head[1]));
+            lines.check_blocks(section, n_read, head[1], "nodes");
           }
         lines.next_in(section);
         lines.expect("$EndNodes");
         return nodes;
-      }
-
-
-
-      // The number of nodes of the linear element types of gmsh (points,
-      // lines, triangles, quadrilaterals, tetrahedra, hexahedra, prisms,
-      // pyramids); 0 for the others.
-      std::size_t
-      nodes_of_type(const long long type)
-      {
-        switch (type)
-          {
-            case 15:
-              return 1;
-            case 1:
-              return 2;
-            case 2:
-              return 3;
-            case 3:
-            case 4:
-              return 4;
-            case 5:
-              return 8;
-            case 6:
-              return 6;
-            case 7:
-              return 5;
-            default:
-              return 0;
-          }
-      }
-
-
-
-      // Zero measure of a triangle (2D) or tetrahedron (3D), relative to
-      // its longest edge.
-      bool
-      degenerate(const std::array<const std::array<double, 3> *, 4> &p,
-                 const unsigned int                                  dim)
-      {
-        std::array<std::array<double, 3>, 3> e;
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int d = 0; d < 3; ++d)
-            e[k][d] = d < dim ? (*p[k + 1])[d] - (*p[0])[d] : 0.;
-        double h = 0;
-        for (unsigned int i = 0; i <= dim; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            {
-              double l2 = 0;
-              for (unsigned int d = 0; d < dim; ++d)
-                l2 += std::pow((*p[i])[d] - (*p[j])[d], 2);
-              h = std::max(h, std::sqrt(l2));
-            }
-        const double measure =
-          dim == 2 ? e[0][0] * e[1][1] - e[0][1] * e[1][0] :
-                     e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                       e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-        return !(std::abs(measure) > 1e-10 * std::pow(h, dim));
-      }
-
-
-
-      // The elements read so far into the mesh, with what they need to be
-      // checked: the nodes, the dimension and the start of the errors that
-      // name no line.
-      struct ElementReader
-      {
-        Lines             &lines;
-        const Nodes       &nodes;
-        const unsigned int dim;
-        const std::string &error;
-        GmshMesh          &mesh;
-
-        // One element of gmsh type @p type with the nodes @p node_tags and
-        // the physical tag @p physical: checked, and kept if it is a cell or
-        // a boundary element of this dimension.
-        void
-        add(const long long   tag,
-            const long long   type,
-            const long long  *node_tags,
-            const std::size_t n_nodes,
-            const long long   physical)
-        {
-          // The element's name, made only for an error.
-          const auto element = [tag] {
-            return "element " + std::to_string(tag);
-          };
-          const std::size_t n = nodes_of_type(type);
-          if (n == 0)
-            lines.fail(element() + " is of gmsh type " + std::to_string(type) +
-                       ", which dpana does not read (it reads points, lines, "
-                       "triangles and tetrahedra of the first order)");
-          if (n_nodes != n)
-            lines.fail(element() + " of type " + std::to_string(type) +
-                       " has " + std::to_string(n_nodes) +
-                       " nodes instead of " + std::to_string(n));
-          std::array<unsigned int, 8> position;
-          for (std::size_t k = 0; k < n; ++k)
-            {
-              const long long i = nodes.find(node_tags[k]);
-              if (i < 0)
-                lines.fail(element() + " refers to node " +
-                           std::to_string(node_tags[k]) +
-                           ", which $Nodes does not define");
-              position[k] = i;
-            }
-          const long long cell_type = dim == 2 ? 2 : 4, face_type = dim - 1;
-          if (type == cell_type)
-            add_cell(tag, position, physical);
-          else if (type == face_type)
-            {
-              mesh.face_nodes.insert(mesh.face_nodes.end(),
-                                     position.begin(),
-                                     position.begin() + dim);
-              mesh.face_tags.push_back(id_of(physical));
-            }
-          else if (type == 3 || (type >= 5 && type <= 7) ||
-                   (type == 4 && dim == 2))
-            throw InputError(error + "' must contain " +
-                             (dim == 2 ? "triangles" : "tetrahedra") + " only");
-        }
-
-      private:
-        void
-        add_cell(const long long                    tag,
-                 const std::array<unsigned int, 8> &position,
-                 const long long                    physical)
-        {
-          std::array<const std::array<double, 3> *, 4> p;
-          for (unsigned int k = 0; k <= dim; ++k)
-            p[k] = &nodes.x[position[k]];
-          if (degenerate(p, dim))
-            lines.fail("element " + std::to_string(tag) + " (a " +
-                       (dim == 2 ? "triangle) has zero area" :
-                                   "tetrahedron) has zero volume") +
-                       ": a degenerate cell");
-          mesh.cell_nodes.insert(mesh.cell_nodes.end(),
-                                 position.begin(),
-                                 position.begin() + dim + 1);
-          mesh.cell_tags.push_back(id_of(physical));
-        }
-
-        // A physical tag as a material or boundary id.
-        unsigned int
-        id_of(const long long physical) const
-        {
-          if (physical < 0 ||
-              physical >= dealii::numbers::internal_face_boundary_id)
-            lines.fail("physical tag " + std::to_string(physical) +
-                       " is negative or too large for an id");
-          return physical;
-        }
-      };
-
-
-
-      void
-      read_elements(Lines            &lines,
-                    const bool        v41,
-                    const EntityTags &entity_tags,
-                    ElementReader    &reader)
-      {
-        const std::string section = "$Elements";
-        lines.next_in(section);
-        if (!v41)
-          {
-            const long long n = lines.integers(1, "the number of elements")[0];
-            const std::string layout = "an element 'tag type n_tags tags... "
-                                       "nodes...'";
-            for (long long i = 0; i < n; ++i)
-              {
-                lines.next_in(section);
-                const auto &v = lines.integers(0, layout);
-                if (v.size() < 3 || v[2] < 0 ||
-                    v.size() < 3 + static_cast<std::size_t>(v[2]))
-                  lines.fail("expected " + layout + ", got " +
-                             parameters::quote(lines.line()));
-                const std::size_t first = 3 + v[2];
-                reader.add(v[0],
-                           v[1],
-                           v.data() + first,
-                           v.size() - first,
-                           v[2] > 0 ? v[3] : 0);
-              }
-          }
-        else
-          {
-            const std::vector<long long> head =
-              lines.integers(4,
-                             "'blocks elements min_tag max_tag' (format 4.1)");
-            long long n_read = 0;
-            for (long long b = 0; b < head[0]; ++b)
-              {
-                lines.next_in(section);
-                const std::vector<long long> block = lines.integers(
-                  4, "a block head 'dimension entity type elements'");
-                if (block[3] < 0)
-                  lines.fail("a block of " + std::to_string(block[3]) +
-                             " elements");
-                if (block[0] < 0 || block[0] > 3)
-                  lines.fail("a block of elements of an entity of dimension " +
-                             std::to_string(block[0]));
-                const auto      entity = entity_tags[block[0]].find(block[1]);
-                const long long physical =
-                  entity == entity_tags[block[0]].end() ? 0 : entity->second;
-                for (long long i = 0; i < block[3]; ++i)
-                  {
-                    lines.next_in(section);
-                    const auto &v =
-                      lines.integers(0, "an element 'tag nodes...'");
-                    reader.add(
-                      v[0], block[2], v.data() + 1, v.size() - 1, physical);
-                  }
-                n_read += block[3];
-              }
-            if (n_read != head[1])
-              lines.fail("the blocks of $Elements hold " +
-                         std::to_string(n_read) + " elements, its head says " +
-                         std::to_string(head[1]));
-          }
-        lines.next_in(section);
-        lines.expect("$EndElements");
       }
 
 
@@ -641,10 +264,9 @@ namespace dpana
         if (seen)
           lines.fail("a second " + section + " section");
       };
-      Nodes         nodes;
-      EntityTags    entity_tags;
-      GmshMesh      mesh;
-      ElementReader reader{lines, nodes, dim, error, mesh};
+      Nodes      nodes;
+      EntityTags entity_tags;
+      GmshMesh   mesh;
       while (lines.next())
         {
           const std::string line = dealii::Utilities::trim(lines.line());
@@ -665,7 +287,7 @@ namespace dpana
               once(elements_seen, line);
               if (!nodes_seen)
                 lines.fail("$Elements comes before $Nodes");
-              read_elements(lines, v41, entity_tags, reader);
+              read_elements(lines, v41, entity_tags, nodes, dim, error, mesh);
               elements_seen = true;
             }
           else if (line == "$Entities" && v41)
