@@ -1,12 +1,15 @@
 #!/bin/bash
-# The replicated and the distributed assembly of the MPI route side by side
-# (doc/parallel.md, `Contact / Parallel assembly`): the 3D receding block of
+# The replicated and the distributed assembly of the MPI route, and the
+# distributed mesh, side by side (doc/parallel.md, `Contact / Parallel
+# assembly`, `Parallel mesh`): the 3D receding block of
 # prm/receding_3d_L80.prm with Subdivisions = M, H, M (default 32, 16, 32),
 # run on one process (Factorisation back end = mumps: the same MUMPS
-# factorisation, sequential) and on two ranks with each assembly. For every
-# run: the time of every phase (summary.json, rank 0), the peak memory of
-# every rank after the assembly (the log line "Peak memory after the
-# assembly ..."), the peak resident memory of every rank over the whole run
+# factorisation, sequential) and on two ranks with each assembly and with
+# the distributed mesh. For every run: the time of every phase
+# (summary.json, rank 0), the peak and the resident memory of every rank
+# after the assembly (the log lines "Peak memory after the assembly ..."
+# and "Resident memory ..."), the peak resident memory of every rank over
+# the whole run
 # (/usr/bin/time), and the load before and after. Prints one markdown table
 # (also written to WORK/assembly.md).
 #
@@ -30,17 +33,21 @@ fi
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
 mkdir -p "$work"
 
-for variant in np1 np2_replicated np2_distributed; do
+for variant in np1 np2_replicated np2_distributed np2_distributed_mesh; do
   run="$work/receding_${m}x${h}x${m}_$variant"
   rm -rf "$run"
   mkdir -p "$run"
   assembly=${variant#np2_}
+  assembly=${assembly%_mesh}
   # The scene without its comparison file (an output of another run).
   sed -e "s/Subdivisions = .*/Subdivisions = $m, $h, $m/" \
       -e "s|Directory = .*|Directory = output|" \
       -e "/Comparison file/d" \
       -e "s/^  set Cone model .*/&\n  set Factorisation back end  = mumps\n  set Parallel assembly      = ${assembly#np1}/" \
       "$root/prm/receding_3d_L80.prm" > "$run/scene.prm"
+  if [ "$variant" = np2_distributed_mesh ]; then
+    sed -i 's/^  set Parallel assembly .*/&\n  set Parallel mesh          = distributed/' "$run/scene.prm"
+  fi
   if [ "$variant" = np1 ]; then
     sed -i '/Parallel assembly/d' "$run/scene.prm"
     launcher=""
@@ -61,9 +68,11 @@ phases = ["assembly", "contact surface", "factorization", "condensation",
           "contact solve", "recovery", "output"]
 print("| run | dofs | " + " | ".join(phases) +
       " | total | peak after assembly, per rank (MB) "
+      "| resident after assembly, per rank (MB) "
       "| peak of the run, per rank (MB) | load before-after |")
-print("|---" * (len(phases) + 6) + "|")
-for variant in ["np1", "np2_replicated", "np2_distributed"]:
+print("|---" * (len(phases) + 7) + "|")
+for variant in ["np1", "np2_replicated", "np2_distributed",
+                "np2_distributed_mesh"]:
     run = os.path.join(work, "receding_%sx%sx%s_%s" % (m, h, m, variant))
     try:
         summary = json.load(open(os.path.join(run, "output", "summary.json")))
@@ -72,19 +81,21 @@ for variant in ["np1", "np2_replicated", "np2_distributed"]:
         continue
     t = summary["timings"]
     log = open(os.path.join(run, "stdout.txt")).read()
-    after = re.search(r"Peak memory after the assembly \(\w+\), per rank "
-                      r"\(MB\):([\d. ]+)", log)
-    if after:
-        after = " / ".join("%.0f" % float(x) for x in after.group(1).split())
-    else:  # one process: the peak of the assembly phase
+    def per_rank(what):
+        found = re.search(what + r" memory after the assembly \([\w ]+\), "
+                          r"per rank \(MB\):([\d. ]+)", log)
+        return found and " / ".join("%.0f" % float(x)
+                                    for x in found.group(1).split())
+    after, resident = per_rank("Peak"), per_rank("Resident") or "-"
+    if not after:  # one process: the peak of the assembly phase
         after = "%.0f" % summary["peak_memory_mb"]["assembly"]
     peaks = re.findall(r"rank peak kB (\d+)",
                        open(os.path.join(run, "stderr.txt")).read())
     peaks = " / ".join("%.0f" % (int(p) / 1024) for p in peaks)
     load = (open(os.path.join(run, "load_before.txt")).read().split()[0] +
             "-" + open(os.path.join(run, "load_after.txt")).read().split()[0])
-    print("| %s | %d | %s | %.3g | %s | %s | %s |" % (
+    print("| %s | %d | %s | %.3g | %s | %s | %s | %s |" % (
         variant, summary["bodies"][0]["dofs"],
         " | ".join("%.3g" % t.get(p, 0.0) for p in phases),
-        sum(t.values()), after, peaks, load))
+        sum(t.values()), after, resident, peaks, load))
 PYTHON

@@ -6,6 +6,7 @@
 
 #include <dpana/body/body.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dpana
@@ -48,13 +49,18 @@ namespace dpana
                                       centroid,
                                       dealii::update_gradients);
     const dealii::FEValuesExtractors::Vector displacement(0);
-    stress.assign(tria.n_active_cells(), {});
-    stress_zz.assign(dim == 2 ? tria.n_active_cells() : 0, 0.0);
-    von_mises.assign(tria.n_active_cells(), 0.0);
+    const unsigned int n_cells = triangulation().n_active_cells();
+    stress.assign(n_cells, {});
+    stress_zz.assign(dim == 2 ? n_cells : 0, 0.0);
+    von_mises.assign(n_cells, 0.0);
 
+    // A distributed mesh: the cells of this rank (the others are left at
+    // zero; the output writes only these).
     std::vector<dealii::SymmetricTensor<2, dim>> strain(1);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         fe_centroid.reinit(cell);
         fe_centroid[displacement].get_function_symmetric_gradients(u, strain);
         const auto s   = material_.stress(strain[0]);
@@ -68,6 +74,12 @@ namespace dpana
           }
         von_mises[ci] = von_mises_stress(s, szz);
       }
+    max_von_mises_ = 0;
+    for (const double s : von_mises)
+      max_von_mises_ = std::max(max_von_mises_, s);
+    if (local_mesh)
+      max_von_mises_ =
+        dealii::Utilities::MPI::max(max_von_mises_, communicator_);
   }
 
 
@@ -87,7 +99,9 @@ namespace dpana
   // The nodal residual r = K u - f with the UNCONSTRAINED K and f,
   // assembled cell by cell; r vanishes (to round-off) at free values and is
   // the support force at constrained ones. The resultant of the loads is
-  // summed on the way.
+  // summed on the way. A distributed mesh: each rank sums its own cells,
+  // and the sums of the ranks are added up (the residual of every dof on
+  // every rank).
   template <int dim>
   dealii::Vector<double>
   Body<dim>::nodal_residual()
@@ -103,6 +117,8 @@ namespace dpana
 
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         assemble_cell(cell, values, cell_matrix, cell_rhs);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < n; ++i)
@@ -114,6 +130,21 @@ namespace dpana
             applied_resultant[fe_.system_to_component_index(i).first] +=
               cell_rhs[i];
           }
+      }
+    if (local_mesh)
+      {
+        MPI_Allreduce(MPI_IN_PLACE,
+                      residual.begin(),
+                      residual.size(),
+                      MPI_DOUBLE,
+                      MPI_SUM,
+                      communicator_);
+        MPI_Allreduce(MPI_IN_PLACE,
+                      &applied_resultant[0],
+                      dim,
+                      MPI_DOUBLE,
+                      MPI_SUM,
+                      communicator_);
       }
     for (unsigned int k = 0; k < concentrated.size(); ++k)
       {

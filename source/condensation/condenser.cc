@@ -107,19 +107,14 @@ namespace dpana
     // one of the face's vertices is the barycentric coordinate of that
     // vertex (the others vanish), so each quadrature point of the element
     // (ContactElement::points, exact for this linear integrand) adds
-    // weight * lambda_v * e_k to the rows of vertex v. In a P1 system the
-    // base index of a cell's degree of freedom is the number of the cell
-    // vertex it sits on.
+    // weight * lambda_v * e_k to the rows of vertex v, whose degrees of
+    // freedom the face holds (Face::dofs).
     template <int dim>
     void
     Condenser<dim>::assemble_coupling()
     {
-      const auto                                  &fe = body.fe();
-      const unsigned int                           n  = fe.n_dofs_per_cell();
-      std::vector<dealii::types::global_dof_index> local(n);
-      std::vector<Eigen::Triplet<double>>          triplets;
-
-      const auto &faces = surface.get_faces();
+      std::vector<Eigen::Triplet<double>> triplets;
+      const auto                         &faces = surface.get_faces();
       for (unsigned int j = 0; j < surface.n_elements(); ++j)
         {
           const auto                             &element = surface.element(j);
@@ -130,25 +125,15 @@ namespace dpana
           for (const auto &p : element.points)
             {
               const auto &F = faces[p.face];
-              const typename dealii::DoFHandler<dim>::active_cell_iterator cell(
-                &body.triangulation(),
-                F.cell->level(),
-                F.cell->index(),
-                &body.dof_handler());
-              cell->get_dof_indices(local);
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const auto [c, b] = fe.system_to_component_index(i);
-                  const auto vertex = cell->vertex_index(b);
-                  for (unsigned int v = 0; v < F.vertices.size(); ++v)
-                    if (F.vertices[v] == vertex && p.barycentric[v] != 0.0)
-                      for (unsigned int k = 0; k < dim; ++k)
-                        if (directions[k][c] != 0.0)
-                          triplets.emplace_back(local[i],
-                                                dim * j + k,
-                                                p.weight * p.barycentric[v] *
-                                                  directions[k][c]);
-                }
+              for (unsigned int v = 0; v < F.points.size(); ++v)
+                if (p.barycentric[v] != 0.0)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (unsigned int k = 0; k < dim; ++k)
+                      if (directions[k][c] != 0.0)
+                        triplets.emplace_back(F.dofs[dim * v + c],
+                                              dim * j + k,
+                                              p.weight * p.barycentric[v] *
+                                                directions[k][c]);
             }
         }
       V.resize(body.dof_handler().n_dofs(), dim * surface.n_elements());
@@ -304,7 +289,7 @@ namespace dpana
       const MPI_Comm communicator = mpi ? MPI_COMM_WORLD : MPI_COMM_SELF;
       if (mpi)
         parallel::check_ranks(body.name(),
-                              body.triangulation().n_active_cells(),
+                              body.n_cells(),
                               parallel::n_world_ranks());
       auto mumps =
         std::make_unique<linear_algebra::MumpsSchurFactorization>(communicator);

@@ -96,6 +96,16 @@ namespace dpana
         "stiffness matrix; the mesh is still whole on every rank); "
         "'replicated' every rank assembles the whole body and hands its "
         "rows to MUMPS. One process ignores it.");
+      prm.declare_entry(
+        "Parallel mesh",
+        "whole",
+        dealii::Patterns::Selection("whole|distributed"),
+        "With Parallel assembly = distributed on more than one rank, "
+        "whether each rank keeps the whole mesh of each body ('whole') or "
+        "only its cells and a layer of ghost cells around them "
+        "('distributed', a parallel::fullydistributed::Triangulation made "
+        "from the whole mesh, which is released after the set-up of the "
+        "body; doc/parallel.md). One process ignores it.");
     }
 
 
@@ -151,6 +161,12 @@ namespace dpana
       distributed_assembly = route == parallel::Route::mpi &&
                              parallel::n_world_ranks() > 1 &&
                              prm.get("Parallel assembly") == "distributed";
+      distributed_mesh =
+        distributed_assembly && prm.get("Parallel mesh") == "distributed";
+      if (prm.get("Parallel mesh") == "distributed" &&
+          prm.get("Parallel assembly") != "distributed")
+        throw InputError("Contact / Parallel mesh = distributed needs "
+                         "Parallel assembly = distributed");
       if (backend == Backend::mumps)
         parallel::check_mumps_available();
       out_of_core_directory = prm.get("Out-of-core directory");

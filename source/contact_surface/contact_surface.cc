@@ -4,8 +4,9 @@
 //
 // The candidate contact surface of one body: its faces, the frames of its
 // contact elements and their quadrature points, and the gap to a rigid
-// plane. The grouping of the faces is in face_grouping.cc, the pairing with
-// a second body in mortar_pairing.cc.
+// plane. The collection of the candidate faces is in candidate_faces.cc,
+// the grouping of the faces in face_grouping.cc, the pairing with a second
+// body in mortar_pairing.cc.
 
 #include <dpana/base/exceptions.h>
 #include <dpana/contact_surface/contact_surface.h>
@@ -51,98 +52,14 @@ namespace dpana
 
 
 
-    // @sect3{Candidate faces}
-    //
-    // A face of a P1 simplex mesh is flat: its area, centroid and normal
-    // follow from its vertices. The normal is turned outwards by comparing
-    // with the centre of the cell.
-    namespace
-    {
-      template <int dim>
-      Face<dim>
-      make_face(
-        const typename dealii::Triangulation<dim>::active_cell_iterator &cell,
-        const unsigned int                                               f)
-      {
-        const auto face = cell->face(f);
-        Face<dim>  F;
-        F.cell    = cell;
-        F.face_no = f;
-        for (const unsigned int v : face->vertex_indices())
-          {
-            F.vertices.push_back(face->vertex_index(v));
-            F.points.push_back(face->vertex(v));
-            F.centroid += face->vertex(v);
-          }
-        F.centroid /= static_cast<double>(F.points.size());
-        if constexpr (dim == 2)
-          {
-            const auto t = F.points[1] - F.points[0];
-            F.normal[0]  = t[1];
-            F.normal[1]  = -t[0];
-            F.area       = t.norm();
-          }
-        else
-          {
-            F.normal = dealii::cross_product_3d(F.points[1] - F.points[0],
-                                                F.points[2] - F.points[0]);
-            F.area   = 0.5 * F.normal.norm();
-          }
-        F.normal /= F.normal.norm();
-        if ((F.centroid - cell->center()) * F.normal < 0)
-          F.normal *= -1.0;
-        return F;
-      }
-    } // namespace
-
-
-
-    // The faces of the contact boundary whose centroid lies in the box
-    // |x_d - x0_d| <= w of the candidate region (w <= 0: the whole
-    // boundary). The vertices of the faces left out are kept: an element
-    // that touches one lies at an open edge of the candidate surface.
     template <int dim>
     void
-    ContactSurface<dim>::collect_faces(const dealii::Triangulation<dim> &tria,
-                                       const double                      w)
-    {
-      faces.clear();
-      excluded_vertices.clear();
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          {
-            const auto face = cell->face(f);
-            if (!face->at_boundary() || face->boundary_id() != opts.boundary_id)
-              continue;
-            const Face<dim> F      = make_face<dim>(cell, f);
-            bool            inside = true;
-            if (w > 0)
-              for (unsigned int d = 0; d < dim; ++d)
-                if (std::abs(F.centroid[d] - opts.region_centre[d]) >
-                    w * (1 + 1e-12))
-                  inside = false;
-            if (inside)
-              faces.push_back(F);
-            else
-              excluded_vertices.insert(F.vertices.begin(), F.vertices.end());
-          }
-      if (faces.empty())
-        throw InputError(opts.body + ": no face of the contact boundary '" +
-                         opts.boundary +
-                         "' lies in the candidate region (parameters "
-                         "Contact / Boundary, Candidate centre, Candidate "
-                         "half width)");
-    }
-
-
-
-    template <int dim>
-    void
-    ContactSurface<dim>::build(const dealii::Triangulation<dim> &tria,
-                               const Options                    &options)
+    ContactSurface<dim>::build(const dealii::DoFHandler<dim> &dofs,
+                               const Options                 &options,
+                               const MPI_Comm                 communicator)
     {
       opts = options;
-      collect_faces(tria, opts.region_half_width);
+      collect_faces(dofs, opts.region_half_width, communicator);
 
       // The surface normal: the given contact direction, or the
       // area-weighted mean of the outward normals of the faces.

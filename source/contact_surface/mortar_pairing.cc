@@ -340,15 +340,16 @@ namespace dpana
     // tangential positions but is not in contact.
     template <int dim>
     void
-    ContactSurface<dim>::pair(const dealii::Triangulation<dim> &tria,
-                              const Options                    &options,
-                              ContactSurface<dim>              &first)
+    ContactSurface<dim>::pair(const dealii::DoFHandler<dim> &dofs,
+                              const Options                 &options,
+                              ContactSurface<dim>           &first,
+                              const MPI_Comm                 communicator)
     {
       // Every face of the boundary is a candidate (the faces that straddle
       // the edge of the candidate region are needed to cover the first
       // body's faces there); the candidate region acts on the first body.
       opts = options;
-      collect_faces(tria, 0);
+      collect_faces(dofs, 0, communicator);
       {
         std::vector<Face<dim>> facing;
         for (const auto &F : faces)
@@ -402,12 +403,14 @@ namespace dpana
 
 
     template void
-    ContactSurface<2>::pair(const dealii::Triangulation<2> &,
+    ContactSurface<2>::pair(const dealii::DoFHandler<2> &,
                             const Options &,
-                            ContactSurface<2> &);
+                            ContactSurface<2> &,
+                            const MPI_Comm);
     template void
-    ContactSurface<3>::pair(const dealii::Triangulation<3> &,
+    ContactSurface<3>::pair(const dealii::DoFHandler<3> &,
                             const Options &,
-                            ContactSurface<3> &);
+                            ContactSurface<3> &,
+                            const MPI_Comm);
   } // namespace contact_surface
 } // namespace dpana

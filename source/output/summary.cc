@@ -51,18 +51,16 @@ namespace dpana
     nlohmann::json
     to_json(const Body<dim> &body)
     {
-      const auto    &vm = body.cell_von_mises();
-      nlohmann::json j  = {
-         {"name", body.name()},
-         {"material", body.material().description(dim)},
-         {"cells", body.triangulation().n_active_cells()},
-         {"vertices", body.triangulation().n_used_vertices()},
-         {"dofs", body.dof_handler().n_dofs()},
-         {"constrained_dofs", body.constraints().n_constraints()},
-         {"max_displacement", body.max_displacement()},
-         {"max_von_mises",
-         vm.empty() ? 0.0 : *std::max_element(vm.begin(), vm.end())},
-         {"applied_load_resultant", to_vector(body.applied_load_resultant())}};
+      nlohmann::json j = {
+        {"name", body.name()},
+        {"material", body.material().description(dim)},
+        {"cells", body.n_cells()},
+        {"vertices", body.n_vertices()},
+        {"dofs", body.dof_handler().n_dofs()},
+        {"constrained_dofs", body.constraints().n_constraints()},
+        {"max_displacement", body.max_displacement()},
+        {"max_von_mises", body.max_von_mises()},
+        {"applied_load_resultant", to_vector(body.applied_load_resultant())}};
       j["reactions"] = nlohmann::json::object();
       for (const auto &[name, R] : body.reactions())
         j["reactions"][name] = to_vector(R);

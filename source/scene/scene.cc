@@ -169,7 +169,8 @@ namespace dpana
               parallel::check_ranks(body->name(),
                                     body->triangulation().n_active_cells(),
                                     parallel::n_world_ranks());
-              body->partition(MPI_COMM_WORLD);
+              body->partition(MPI_COMM_WORLD,
+                              condensation_parameters.distributed_mesh);
             }
           body->setup();
           if (!with_contact)
@@ -178,20 +179,28 @@ namespace dpana
         }
       if (!quiet)
         print_bodies();
-      // On several ranks, the peak memory of every rank so far (the mesh,
-      // K, f): what the distributed assembly saves (doc/parallel.md).
+      // On several ranks, the peak memory of every rank so far and the
+      // memory it holds now (the mesh, K, f): what the distributed assembly
+      // and the distributed mesh save (doc/parallel.md).
       if (with_contact && condensation_parameters.route == parallel::Route::mpi)
         {
           const auto peaks =
             dealii::Utilities::MPI::gather(MPI_COMM_WORLD, peak_memory_mb(), 0);
+          const auto resident = dealii::Utilities::MPI::gather(
+            MPI_COMM_WORLD, condensation::resident_memory() / 1e6, 0);
           if (!quiet && parallel::is_root())
             {
-              std::cout << "        Peak memory after the assembly ("
-                        << (condensation_parameters.distributed_assembly ?
-                              "distributed" :
-                              "replicated")
+              const std::string how =
+                condensation_parameters.distributed_mesh ? "distributed mesh" :
+                condensation_parameters.distributed_assembly ? "distributed" :
+                                                               "replicated";
+              std::cout << "        Peak memory after the assembly (" << how
                         << "), per rank (MB):";
               for (const double m : peaks)
+                std::cout << " " << m;
+              std::cout << "\n        Resident memory after the assembly ("
+                        << how << "), per rank (MB):";
+              for (const double m : resident)
                 std::cout << " " << m;
               std::cout << std::endl;
             }
@@ -246,11 +255,14 @@ namespace dpana
           surfaces.push_back(
             std::make_unique<contact_surface::ContactSurface<dim>>());
           if (b == 0)
-            surfaces[0]->build(bodies[0]->triangulation(), options);
+            surfaces[0]->build(bodies[0]->dof_handler(),
+                               options,
+                               bodies[0]->communicator());
           else
-            surfaces[1]->pair(bodies[1]->triangulation(),
+            surfaces[1]->pair(bodies[1]->dof_handler(),
                               options,
-                              *surfaces[0]);
+                              *surfaces[0],
+                              bodies[1]->communicator());
         }
       if (bodies.size() == 1)
         {

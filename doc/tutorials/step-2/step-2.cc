@@ -315,7 +315,7 @@ namespace Step2
       surface_parameters.surface_options(0, body.name(), body.boundary_names());
     options.region_half_width = half_width;
     c->surface = std::make_unique<contact_surface::ContactSurface<2>>();
-    c->surface->build(body.triangulation(), options);
+    c->surface->build(body.dof_handler(), options);
     c->condenser =
       std::make_unique<condensation::Condenser<2>>(body, *c->surface);
 

@@ -30,6 +30,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <deal.II/distributed/fully_distributed_tria.h>
+
 #include <Eigen/Dense>
 
 #include <array>
@@ -132,17 +134,34 @@ namespace dpana
 
     /**
      * The mesh, for programs that build it themselves; they must then call
-     * set_boundary_names().
+     * set_boundary_names(). After setup() of a body whose mesh is
+     * distributed (partition()), the cells of this rank and a layer of
+     * ghost cells around them (a parallel::fullydistributed::Triangulation).
      */
     dealii::Triangulation<dim> &
     triangulation()
     {
-      return tria;
+      return local_mesh ? *local_mesh : tria;
     }
     const dealii::Triangulation<dim> &
     triangulation() const
     {
-      return tria;
+      return local_mesh ? *local_mesh : tria;
+    }
+
+    /**
+     * The number of cells and of vertices of the whole mesh, also when it
+     * is distributed (known after setup()).
+     */
+    unsigned int
+    n_cells() const
+    {
+      return n_whole_cells;
+    }
+    unsigned int
+    n_vertices() const
+    {
+      return n_whole_vertices;
     }
 
     /**
@@ -217,11 +236,21 @@ namespace dpana
      * rank are contiguous; assemble() assembles the cells of this rank
      * only. system_matrix() is then this rank's share of K (the sum of the
      * shares over the ranks is K), system_rhs() the whole f (summed over
-     * the ranks). The mesh itself stays whole on every rank. With one rank
-     * nothing changes.
+     * the ranks). The mesh itself stays whole on every rank, unless
+     * @p distribute_mesh: setup() then builds, from the whole mesh, a
+     * parallel::fullydistributed::Triangulation of this rank's cells and a
+     * layer of ghosts, on which the degrees of freedom are numbered
+     * (deal.II's numbering, contiguous on each rank) and the cells
+     * assembled, output and collected into contact surfaces. What needs
+     * the whole mesh is done by setup() before the whole mesh is released:
+     * the checks of the boundary names, the constraints, the rigid motions
+     * and the vertices of the concentrated forces, all in the numbering of
+     * the distributed degrees of freedom. The vectors of all degrees of
+     * freedom (f, u, the rigid motions) and the dofs of every vertex stay
+     * whole on every rank. With one rank nothing changes.
      */
     void
-    partition(const MPI_Comm communicator);
+    partition(const MPI_Comm communicator, const bool distribute_mesh = false);
 
     /**
      * The number of parts of partition() (1 if it was not called) and the
@@ -236,6 +265,15 @@ namespace dpana
     this_part() const
     {
       return this_part_;
+    }
+
+    /**
+     * The ranks of partition() (MPI_COMM_SELF if it was not called).
+     */
+    MPI_Comm
+    communicator() const
+    {
+      return communicator_;
     }
 
     /**
@@ -359,6 +397,7 @@ namespace dpana
     /**
      * The degrees of freedom of every vertex of the mesh: dofs[v][c] is the
      * c-th displacement component at vertex v (invalid for unused vertices).
+     * A distributed mesh: v is the vertex of the whole mesh.
      */
     const std::vector<std::array<dealii::types::global_dof_index, dim>> &
     vertex_dofs() const
@@ -433,6 +472,16 @@ namespace dpana
     }
 
     /**
+     * The largest von Mises stress of all cells (of all ranks, if the mesh
+     * is distributed), from compute_stresses(); 0 before.
+     */
+    double
+    max_von_mises() const
+    {
+      return max_von_mises_;
+    }
+
+    /**
      * For every named boundary that carries a kinematic condition, the
      * resultant of its support forces (N, or N/mm in 2D), from the nodal
      * residual r = K u - f of the supported vertices, split at a vertex
@@ -481,8 +530,15 @@ namespace dpana
 
     std::string name_;
 
-    std::unique_ptr<geometry::Geometry<dim>>          geometry;
-    dealii::Triangulation<dim>                        tria;
+    std::unique_ptr<geometry::Geometry<dim>> geometry;
+    // The whole mesh; with a distributed mesh, released by setup() once the
+    // distributed one (local_mesh) is made.
+    dealii::Triangulation<dim> tria;
+    std::unique_ptr<dealii::parallel::fullydistributed::Triangulation<dim>>
+                                                      local_mesh;
+    bool                                              distribute_mesh_ = false;
+    unsigned int                                      n_whole_cells    = 0;
+    unsigned int                                      n_whole_vertices = 0;
     std::map<std::string, dealii::types::boundary_id> names;
 
     Material                material_;
@@ -511,6 +567,7 @@ namespace dpana
     std::vector<dealii::SymmetricTensor<2, dim>>  stress;
     std::vector<double>                           stress_zz;
     std::vector<double>                           von_mises;
+    double                                        max_von_mises_ = 0;
     std::map<std::string, dealii::Tensor<1, dim>> reaction;
     // For every supported vertex, the conditions acting there.
     std::map<unsigned int, SupportDirections> support_directions;
@@ -529,6 +586,8 @@ namespace dpana
     partition_cells();
     void
     number_dofs_by_subdomain();
+    void
+    distribute();
 
     dealii::types::boundary_id
     resolve(const std::string &boundary, const std::string &parameter) const;

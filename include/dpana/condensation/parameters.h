@@ -57,6 +57,7 @@ namespace dpana
      *       set Memory limit (GB)      = 0
      *       set Parallel route         = auto
      *       set Parallel assembly      = distributed
+     *       set Parallel mesh          = whole
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -102,6 +103,11 @@ namespace dpana
        * (`replicated`).
        */
       bool distributed_assembly = false;
+      /**
+       * Whether the mesh of each body is distributed too (`Parallel mesh =
+       * distributed`, Body::partition()): only with #distributed_assembly.
+       */
+      bool distributed_mesh = false;
       /**
        * Where MUMPS writes its factor (out of core, MUMPS' ICNTL(22) = 1);
        * empty: in memory. Only with Backend::mumps (an InputError with

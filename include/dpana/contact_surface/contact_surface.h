@@ -4,11 +4,14 @@
 #ifndef dpana_contact_surface_contact_surface_h
 #define dpana_contact_surface_contact_surface_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
-#include <deal.II/grid/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/grid/cell_id.h>
 
 #include <array>
 #include <set>
@@ -20,19 +23,30 @@ namespace dpana
   namespace contact_surface
   {
     /**
-     * One boundary face of a body on the candidate contact surface: the cell
-     * it belongs to and its local face number, with its (flat, P1) geometry.
+     * One boundary face of a body on the candidate contact surface, with its
+     * (flat, P1) geometry and the degrees of freedom of its vertices. It
+     * refers to no mesh object, so that the faces of a body whose cells are
+     * split over MPI ranks, or whose mesh is, can be gathered on every rank:
+     * the cell's id and the face's number in the cell give the order of the
+     * faces, the same on any number of ranks (the order of the active cells
+     * of one process is that of their ids, for the meshes dpana makes: flat
+     * or refined uniformly).
      */
     template <int dim>
     struct Face
     {
-      typename dealii::Triangulation<dim>::active_cell_iterator cell;
-      unsigned int                                              face_no;
-      dealii::Point<dim>                                        centroid;
-      dealii::Tensor<1, dim>                                    normal;
-      double                                                    area;
-      std::vector<unsigned int>                                 vertices;
-      std::vector<dealii::Point<dim>>                           points;
+      dealii::CellId         cell;
+      unsigned int           face_no;
+      dealii::Point<dim>     centroid;
+      dealii::Tensor<1, dim> normal;
+      double                 area;
+      // A key of each vertex: the number of its first degree of freedom
+      // (the same vertex has the same key on every rank).
+      std::vector<unsigned int>       vertices;
+      std::vector<dealii::Point<dim>> points;
+      // The degrees of freedom of the vertices, vertex by vertex, component
+      // by component within a vertex (dim per vertex).
+      std::vector<dealii::types::global_dof_index> dofs;
     };
 
     /**
@@ -186,25 +200,31 @@ namespace dpana
       };
 
       /**
-       * Collect the candidate faces of @p tria and group them. Throws
-       * dpana::InputError if no face qualifies.
+       * Collect the candidate faces of the mesh of @p dofs and group them.
+       * Throws dpana::InputError if no face qualifies. On a @p communicator
+       * of several ranks, each rank collects the faces of its own cells
+       * (subdomain id = its rank) and the faces are gathered on all ranks,
+       * in the order of one process.
        */
       void
-      build(const dealii::Triangulation<dim> &tria, const Options &options);
+      build(const dealii::DoFHandler<dim> &dofs,
+            const Options                 &options,
+            const MPI_Comm                 communicator = MPI_COMM_SELF);
 
       /**
        * Build the surface of the second body of a pair: the elements are
        * those of @p first, with its frame negated, and the gap of @p first is
        * set to the normal distance between the two surfaces. Only the faces
-       * of @p tria that face the first body (outward normal . n < 0) take
+       * of the mesh of @p dofs that face the first body (outward normal . n < 0) take
        * part, whether or not they lie in the candidate region. Every face of
        * @p first must be covered exactly once by the projections of these
        * faces; otherwise dpana::InputError with a one-line message.
        */
       void
-      pair(const dealii::Triangulation<dim> &tria,
-           const Options                    &options,
-           ContactSurface<dim>              &first);
+      pair(const dealii::DoFHandler<dim> &dofs,
+           const Options                 &options,
+           ContactSurface<dim>           &first,
+           const MPI_Comm                 communicator = MPI_COMM_SELF);
 
       /**
        * Gaps to the rigid plane through @p point with normal -n of each
@@ -299,7 +319,9 @@ namespace dpana
       std::set<unsigned int>                      excluded_vertices;
 
       void
-      collect_faces(const dealii::Triangulation<dim> &tria, const double w);
+      collect_faces(const dealii::DoFHandler<dim> &dofs,
+                    const double                   w,
+                    const MPI_Comm                 communicator);
       void
       group_faces();
       bool

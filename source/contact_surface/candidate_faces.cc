@@ -1,0 +1,219 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+//
+// The candidate faces of a contact surface: the faces of the contact
+// boundary in the candidate region, collected from the cells of this rank
+// and, when the cells of the body are split over several ranks, gathered
+// on every rank in the order of one process.
+
+#include <dpana/base/exceptions.h>
+#include <dpana/contact_surface/contact_surface.h>
+
+#include <deal.II/base/mpi.templates.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace dpana
+{
+  namespace contact_surface
+  {
+    namespace
+    {
+      // A face of a P1 simplex mesh is flat: its area, centroid and normal
+      // follow from its vertices. The normal is turned outwards by comparing
+      // with the centre of the cell. The vertices are keyed by their first
+      // degree of freedom (the component-wise order of the vector-valued P1
+      // element, checked by Body::setup()).
+      template <int dim>
+      Face<dim>
+      make_face(
+        const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+        const unsigned int                                            f)
+      {
+        const auto face = cell->face(f);
+        Face<dim>  F;
+        F.cell    = cell->id();
+        F.face_no = f;
+        for (const unsigned int v : face->vertex_indices())
+          {
+            for (unsigned int c = 0; c < dim; ++c)
+              F.dofs.push_back(face->vertex_dof_index(v, c));
+            F.vertices.push_back(F.dofs[v * dim]);
+            F.points.push_back(face->vertex(v));
+            F.centroid += face->vertex(v);
+          }
+        F.centroid /= static_cast<double>(F.points.size());
+        if constexpr (dim == 2)
+          {
+            const auto t = F.points[1] - F.points[0];
+            F.normal[0]  = t[1];
+            F.normal[1]  = -t[0];
+            F.area       = t.norm();
+          }
+        else
+          {
+            F.normal = dealii::cross_product_3d(F.points[1] - F.points[0],
+                                                F.points[2] - F.points[0]);
+            F.area   = 0.5 * F.normal.norm();
+          }
+        F.normal /= F.normal.norm();
+        if ((F.centroid - cell->center()) * F.normal < 0)
+          F.normal *= -1.0;
+        return F;
+      }
+
+
+
+      // A face as numbers for the gathering over ranks (the indices of
+      // cells and dofs are exact in a double up to 2^53), with a flag for
+      // the candidate region: whether inside, the cell's id (its four
+      // numbers), face, vertex count,
+      // centroid, normal, area, the vertices' points and dofs.
+      template <int dim>
+      void
+      pack(const Face<dim> &F, const bool inside, std::vector<double> &data)
+      {
+        data.push_back(inside);
+        for (const unsigned int i : F.cell.template to_binary<dim>())
+          data.push_back(i);
+        data.push_back(F.face_no);
+        data.push_back(F.points.size());
+        for (unsigned int d = 0; d < dim; ++d)
+          data.push_back(F.centroid[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          data.push_back(F.normal[d]);
+        data.push_back(F.area);
+        for (const auto &x : F.points)
+          for (unsigned int d = 0; d < dim; ++d)
+            data.push_back(x[d]);
+        for (const auto i : F.dofs)
+          data.push_back(static_cast<double>(i));
+      }
+
+
+
+      template <int dim>
+      std::pair<Face<dim>, bool>
+      unpack(const std::vector<double> &data, std::size_t &k)
+      {
+        Face<dim>                   F;
+        const bool                  inside = data[k++] != 0;
+        dealii::CellId::binary_type cell;
+        for (auto &i : cell)
+          i = data[k++];
+        F.cell               = dealii::CellId(cell);
+        F.face_no            = data[k++];
+        const unsigned int n = data[k++];
+        for (unsigned int d = 0; d < dim; ++d)
+          F.centroid[d] = data[k++];
+        for (unsigned int d = 0; d < dim; ++d)
+          F.normal[d] = data[k++];
+        F.area = data[k++];
+        F.points.resize(n);
+        for (auto &x : F.points)
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = data[k++];
+        F.dofs.resize(n * dim);
+        for (auto &i : F.dofs)
+          i = static_cast<dealii::types::global_dof_index>(data[k++]);
+        for (unsigned int v = 0; v < n; ++v)
+          F.vertices.push_back(F.dofs[v * dim]);
+        return {F, inside};
+      }
+
+
+
+      // The faces of all ranks, each with its flag, in the order of the
+      // cells and of the faces in a cell: the order in which one process
+      // visits them.
+      template <int dim>
+      std::vector<std::pair<Face<dim>, bool>>
+      gather(const std::vector<std::pair<Face<dim>, bool>> &own,
+             const MPI_Comm                                 communicator)
+      {
+        std::vector<double> data;
+        for (const auto &[F, inside] : own)
+          pack(F, inside, data);
+        std::vector<std::pair<Face<dim>, bool>> all;
+        for (const auto &part :
+             dealii::Utilities::MPI::all_gather(communicator, data))
+          for (std::size_t k = 0; k < part.size();)
+            all.push_back(unpack<dim>(part, k));
+        std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+          return std::tie(a.first.cell, a.first.face_no) <
+                 std::tie(b.first.cell, b.first.face_no);
+        });
+        return all;
+      }
+    } // namespace
+
+
+
+    // The faces of the contact boundary whose centroid lies in the box
+    // |x_d - x0_d| <= w of the candidate region (w <= 0: the whole
+    // boundary). The vertices of the faces left out are kept: an element
+    // that touches one lies at an open edge of the candidate surface. On
+    // several ranks each rank visits the cells of its subdomain.
+    template <int dim>
+    void
+    ContactSurface<dim>::collect_faces(const dealii::DoFHandler<dim> &dofs,
+                                       const double                   w,
+                                       const MPI_Comm communicator)
+    {
+      // A program without MPI (the tutorials) works on one process.
+      const bool         mpi = dealii::Utilities::MPI::job_supports_mpi();
+      const unsigned int n_ranks =
+        mpi ? dealii::Utilities::MPI::n_mpi_processes(communicator) : 1;
+      const unsigned int rank =
+        mpi ? dealii::Utilities::MPI::this_mpi_process(communicator) : 0;
+      std::vector<std::pair<Face<dim>, bool>> candidates;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (n_ranks == 1 || cell->subdomain_id() == rank)
+          for (const unsigned int f : cell->face_indices())
+            {
+              const auto face = cell->face(f);
+              if (!face->at_boundary() ||
+                  face->boundary_id() != opts.boundary_id)
+                continue;
+              const Face<dim> F      = make_face<dim>(cell, f);
+              bool            inside = true;
+              if (w > 0)
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (std::abs(F.centroid[d] - opts.region_centre[d]) >
+                      w * (1 + 1e-12))
+                    inside = false;
+              candidates.emplace_back(F, inside);
+            }
+      if (n_ranks > 1)
+        candidates = gather(candidates, communicator);
+
+      faces.clear();
+      excluded_vertices.clear();
+      for (const auto &[F, inside] : candidates)
+        if (inside)
+          faces.push_back(F);
+        else
+          excluded_vertices.insert(F.vertices.begin(), F.vertices.end());
+      if (faces.empty())
+        throw InputError(opts.body + ": no face of the contact boundary '" +
+                         opts.boundary +
+                         "' lies in the candidate region (parameters "
+                         "Contact / Boundary, Candidate centre, Candidate "
+                         "half width)");
+    }
+
+
+
+    template void
+    ContactSurface<2>::collect_faces(const dealii::DoFHandler<2> &,
+                                     const double,
+                                     const MPI_Comm);
+    template void
+    ContactSurface<3>::collect_faces(const dealii::DoFHandler<3> &,
+                                     const double,
+                                     const MPI_Comm);
+  } // namespace contact_surface
+} // namespace dpana
