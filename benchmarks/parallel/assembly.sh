@@ -4,8 +4,9 @@
 # assembly`, `Parallel mesh`): the 3D receding block of
 # prm/receding_3d_L80.prm with Subdivisions = M, H, M (default 32, 16, 32),
 # run on one process (Factorisation back end = mumps: the same MUMPS
-# factorisation, sequential) and on two ranks with each assembly and with
-# the distributed mesh. For every run: the time of every phase
+# factorisation, sequential) and on two ranks with each assembly, the
+# distributed one with the whole mesh on every rank (np2_distributed) and
+# with the mesh distributed (np2_distributed_mesh, the default). For every run: the time of every phase
 # (summary.json, rank 0), the peak and the resident memory of every rank
 # after the assembly (the log lines "Peak memory after the assembly ..."
 # and "Resident memory ..."), the peak resident memory of every rank over
@@ -45,8 +46,8 @@ for variant in np1 np2_replicated np2_distributed np2_distributed_mesh; do
       -e "/Comparison file/d" \
       -e "s/^  set Cone model .*/&\n  set Factorisation back end  = mumps\n  set Parallel assembly      = ${assembly#np1}/" \
       "$root/prm/receding_3d_L80.prm" > "$run/scene.prm"
-  if [ "$variant" = np2_distributed_mesh ]; then
-    sed -i 's/^  set Parallel assembly .*/&\n  set Parallel mesh          = distributed/' "$run/scene.prm"
+  if [ "$variant" = np2_distributed ]; then
+    sed -i 's/^  set Parallel assembly .*/&\n  set Parallel mesh          = whole/' "$run/scene.prm"
   fi
   if [ "$variant" = np1 ]; then
     sed -i '/Parallel assembly/d' "$run/scene.prm"

@@ -20,17 +20,22 @@ of 1e7 dofs with 1e4 contact unknowns on 16, 64 and 256 ranks
   8 (n_G n_c + n_c^2) bytes) at the measured dense rate, serial, on rank 0;
 - the contact solve: t = t_0 (n_c / n_c0)^q, q fitted to the measured runs,
   serial on rank 0;
-- assembly (the mesh and K replicated on every rank today) at the measured
-  rate per dof, not divided by P; the per-rank memory of the replicated mesh
-  and K at the measured bytes per dof;
+- assembly at the measured rate per dof, not divided by P (rank 0 builds
+  the whole mesh); the per-rank memory of the mesh and K at the measured
+  bytes per dof, of which, with the distributed mesh and assembly (the
+  default), the fraction measured by assembly.sh on two ranks
+  (results/assembly.md: one process against rank 1 of the distributed
+  mesh) is divided over P and the rest (the vectors of all dofs, the
+  points and dofs of every vertex) stays on every rank;
 - recovery: two interior solves, 4 flops per factor entry, divided over P
   ranks as the factorisation.
 
-    model.py results.csv OUT_DIR
+    model.py results.csv OUT_DIR [assembly.md]
 """
 import csv
 import math
 import os
+import re
 import sys
 
 TARGET_N, TARGET_NC = 1e7, 1e4
@@ -97,6 +102,26 @@ def fit(rows):
     return m
 
 
+def replicated_fraction(path, base_mb):
+    """The fraction of the memory of the mesh and K (above base_mb) that
+    stays on every rank with the distributed mesh: from the peak after the
+    assembly of one process, T, and of rank 1 of two with the distributed
+    mesh, D (both above base_mb), D = x T + (1 - x) T / 2."""
+    if not path or not os.path.exists(path):
+        return 1.0
+    peaks = {}
+    for line in open(path):
+        cells = [c.strip() for c in line.split("|")[1:-1]]
+        if len(cells) > 11 and cells[0] in ("np1", "np2_distributed_mesh"):
+            peaks[cells[0]] = [float(x) for x in re.findall(r"[\d.]+",
+                                                             cells[10])]
+    if "np1" not in peaks or "np2_distributed_mesh" not in peaks:
+        return 1.0
+    T = peaks["np1"][0] - base_mb
+    D = peaks["np2_distributed_mesh"][-1] - base_mb
+    return min(1.0, max(0.0, (2 * D - T) / T))
+
+
 def predict(m, N, nc, P, efficiency):
     nG = nc * m["nG0"] / m["nc0"]
     share = 1 / (P * efficiency)
@@ -112,7 +137,8 @@ def predict(m, N, nc, P, efficiency):
     factor_mb = m["mem0_mb"] * (N / m["N0"]) ** m["mem_exponent"] / P * m[
         "imbalance"]
     dense_mb = 8 * (2 * nG ** 2 + nG * nc + nc ** 2) / 2 ** 20
-    mesh_mb = m["base_mb"] + m["asm_mb_per_dof"] * N
+    x = m["replicated_fraction"]
+    mesh_mb = m["base_mb"] + m["asm_mb_per_dof"] * N * (x + (1 - x) / P)
     return t, {"factor per rank": factor_mb, "dense on rank 0": dense_mb,
                "mesh and K on every rank": mesh_mb,
                "total on rank 0": factor_mb + dense_mb + mesh_mb}
@@ -122,6 +148,8 @@ def main():
     rows = load(sys.argv[1])
     out = sys.argv[2]
     m = fit(rows)
+    m["replicated_fraction"] = replicated_fraction(
+        sys.argv[3] if len(sys.argv) > 3 else None, m["base_mb"])
     lines = ["# Cost model of the MPI route (fitted by model.py)", "",
              "Fitted on the largest run of results.csv (%d dofs, n_c = %d, "
              "n_Γ = %d):" % (m["N0"], m["nc0"], m["nG0"]), "",
@@ -129,7 +157,8 @@ def main():
     for k in ["flops0", "flop_exponent", "mem0_mb",
               "mem_exponent", "fact_rate", "efficiency",
               "imbalance", "dense_rate", "solve0", "solve_exponent",
-              "asm_rate", "asm_mb_per_dof", "base_mb", "recovery_rate"]:
+              "asm_rate", "asm_mb_per_dof", "base_mb", "replicated_fraction",
+              "recovery_rate"]:
         lines.append("| %s | %.4g |" % (k, m[k]))
     lines += ["", "Prediction for a 3D body of %.0e dofs with %.0e contact "
               "unknowns (times in s, memory in GB):" % (TARGET_N, TARGET_NC),

@@ -67,5 +67,6 @@ for size in $sizes; do
   done
 done
 "$py" "$here/collect.py" "$work" "$here/results"
-"$py" "$here/model.py" "$here/results/results.csv" "$here/results"
+"$py" "$here/model.py" "$here/results/results.csv" "$here/results" \
+  "$here/results/assembly.md"
 "$py" "$here/plot.py" "$here/results/results.csv" "$here/results"

@@ -12,15 +12,12 @@
 #include <dpana/body/body.h>
 #include <dpana/body/vertex_sparsity.h>
 
-#include <deal.II/base/mpi.templates.h>
-
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_simplex_p.h>
 
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/tria_description.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -134,6 +131,12 @@ namespace dpana
                 dealii::ExcMessage("Body::create_mesh() needs the "
                                    "parameters of a Geometry subsection."));
     tria.clear();
+    names = geometry->boundary_names();
+    if (n_parts_ > 1 && distribute_mesh_)
+      {
+        create_whole_mesh_on_root();
+        return;
+      }
     try
       {
         geometry->create_triangulation(tria);
@@ -142,7 +145,8 @@ namespace dpana
       {
         throw InputError(name_ + " / " + e.what());
       }
-    names = geometry->boundary_names();
+    n_whole_cells    = tria.n_active_cells();
+    n_whole_vertices = tria.n_used_vertices();
   }
 
 
@@ -223,35 +227,33 @@ namespace dpana
   void
   Body<dim>::setup()
   {
-    // Check every input before any work is done.
-    check_boundary_names();
-    material_.check(name_ + " / Material");
-
-    n_whole_cells    = tria.n_active_cells();
-    n_whole_vertices = tria.n_used_vertices();
     local_mesh.reset();
     serial_index.clear();
-    if (n_parts_ > 1)
-      partition_cells();
     if (n_parts_ > 1 && distribute_mesh_)
-      distribute();
+      {
+        set_up_distributed();
+        material_.check(name_ + " / Material");
+      }
     else
       {
+        // Check every input before any work is done.
+        check_boundary_names();
+        material_.check(name_ + " / Material");
+        n_whole_cells    = tria.n_active_cells();
+        n_whole_vertices = tria.n_used_vertices();
         dof_handler_.reinit(tria);
+        if (n_parts_ > 1)
+          partition_cells();
         dof_handler_.distribute_dofs(fe_);
         if (n_parts_ > 1)
           number_dofs_by_subdomain();
         number_vertex_dofs();
+        make_constraints();
+        rigid_modes =
+          RigidModes<dim>(tria, dofs_of_vertex, dof_handler_.n_dofs());
+        free_modes = rigid_modes.free_modes(constraints_);
+        locate_concentrated_forces();
       }
-
-    make_constraints();
-    rigid_modes = RigidModes<dim>(tria, dofs_of_vertex, dof_handler_.n_dofs());
-    free_modes  = rigid_modes.free_modes(constraints_);
-    locate_concentrated_forces();
-    // A distributed mesh: what needed the whole mesh is done; it is
-    // released before the stiffness matrix is made.
-    if (local_mesh)
-      tria.clear();
 
     if (n_parts_ > 1 || !make_vertex_sparsity_pattern<dim>(
                           tria, dofs_of_vertex, constraints_, sparsity_pattern))
@@ -318,86 +320,6 @@ namespace dpana
     for (dealii::types::global_dof_index i = 0; i < new_index.size(); ++i)
       serial_index[new_index[i]] = i;
     dof_handler_.renumber_dofs(new_index);
-  }
-
-
-
-  // @sect3{The distributed mesh}
-  //
-  // Each rank builds, from the whole mesh partitioned by partition_cells(),
-  // the parallel::fullydistributed::Triangulation of its cells and their
-  // ghosts, and deal.II numbers the degrees of freedom on it, those of each
-  // rank contiguous. The whole mesh is still there: the vertex of the whole
-  // mesh behind each vertex of a cell of this rank is found through the
-  // cell's id, which both meshes share, and the pairs (vertex and
-  // component, dof) of all ranks are gathered, so that every rank knows the
-  // dofs of every vertex (dofs_of_vertex, in the vertices of the whole
-  // mesh) and the number each dof has in the numbering of one process
-  // (serial_index, from a DoFHandler on the whole mesh).
-  template <int dim>
-  void
-  Body<dim>::distribute()
-  {
-    std::vector<std::array<dealii::types::global_dof_index, dim>> serial_dofs;
-    {
-      dof_handler_.reinit(tria);
-      dof_handler_.distribute_dofs(fe_);
-      number_vertex_dofs();
-      serial_dofs.swap(dofs_of_vertex);
-      dof_handler_.clear();
-    }
-    local_mesh =
-      std::make_unique<dealii::parallel::fullydistributed::Triangulation<dim>>(
-        communicator_);
-    local_mesh->create_triangulation(
-      dealii::TriangulationDescription::Utilities::
-        create_description_from_triangulation(tria, communicator_));
-    dof_handler_.reinit(*local_mesh);
-    dof_handler_.distribute_dofs(fe_);
-
-    // Each vertex of this rank's cells once: (its vertex in the whole mesh
-    // and the component, the dof).
-    std::vector<dealii::types::global_dof_index> own;
-    std::vector<dealii::types::global_dof_index> local(fe_.n_dofs_per_cell());
-    std::vector<bool>                            seen(tria.n_vertices());
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto whole_cell = tria.create_cell_iterator(cell->id());
-          cell->get_dof_indices(local);
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              Assert(whole_cell->vertex(v).distance(cell->vertex(v)) == 0.0,
-                     dealii::ExcInternalError());
-              if (seen[whole_cell->vertex_index(v)])
-                continue;
-              seen[whole_cell->vertex_index(v)] = true;
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  own.push_back(whole_cell->vertex_index(v) * dim + c);
-                  own.push_back(local[v * dim + c]);
-                }
-            }
-        }
-    dofs_of_vertex.assign(tria.n_vertices(), {});
-    for (auto &d : dofs_of_vertex)
-      d.fill(dealii::numbers::invalid_dof_index);
-    serial_index.assign(dof_handler_.n_dofs(),
-                        dealii::numbers::invalid_dof_index);
-    for (const auto &part :
-         dealii::Utilities::MPI::all_gather(communicator_, own))
-      for (std::size_t k = 0; k < part.size(); k += 2)
-        {
-          const auto v = part[k] / dim, c = part[k] % dim;
-          dofs_of_vertex[v][c]      = part[k + 1];
-          serial_index[part[k + 1]] = serial_dofs[v][c];
-        }
-    AssertThrow(std::none_of(serial_index.begin(),
-                             serial_index.end(),
-                             [](const auto i) {
-                               return i == dealii::numbers::invalid_dof_index;
-                             }),
-                dealii::ExcInternalError());
   }
 
 

@@ -39,40 +39,67 @@ namespace dpana
 
   // @sect3{The nodal vectors of the rigid motions}
 
+  // The used vertices of the mesh that carry dofs, in their order.
   template <int dim>
   RigidModes<dim>::RigidModes(
     const dealii::Triangulation<dim> &tria,
     const std::vector<std::array<dealii::types::global_dof_index, dim>>
                                          &vertex_dofs,
     const dealii::types::global_dof_index n_dofs)
+    : RigidModes(
+        [&]() {
+          std::vector<dealii::Point<dim>> points;
+          for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+            if (tria.vertex_used(v) &&
+                vertex_dofs[v][0] != dealii::numbers::invalid_dof_index)
+              points.push_back(tria.get_vertices()[v]);
+          return points;
+        }(),
+        [&]() {
+          std::vector<std::array<dealii::types::global_dof_index, dim>> dofs;
+          for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+            if (tria.vertex_used(v) &&
+                vertex_dofs[v][0] != dealii::numbers::invalid_dof_index)
+              dofs.push_back(vertex_dofs[v]);
+          return dofs;
+        }(),
+        n_dofs)
   {
-    find_centre_and_length(tria);
-    const auto &vertices = tria.get_vertices();
-    nodal_vectors        = Eigen::MatrixXd::Zero(n_dofs, n_modes);
-    for (unsigned int v = 0; v < vertices.size(); ++v)
-      if (tria.vertex_used(v) &&
-          vertex_dofs[v][0] != dealii::numbers::invalid_dof_index)
-        {
-          const auto  x = (vertices[v] - centre) / length;
-          const auto &d = vertex_dofs[v];
-          for (unsigned int c = 0; c < dim; ++c)
-            nodal_vectors(d[c], c) = 1.0;
-          if constexpr (dim == 2)
-            {
-              nodal_vectors(d[0], 2) = -x[1];
-              nodal_vectors(d[1], 2) = x[0];
-            }
-          else
-            {
-              // Rotations about the x, y and z axes: e_k x (x - c).
-              nodal_vectors(d[1], 3) = -x[2];
-              nodal_vectors(d[2], 3) = x[1];
-              nodal_vectors(d[0], 4) = x[2];
-              nodal_vectors(d[2], 4) = -x[0];
-              nodal_vectors(d[0], 5) = -x[1];
-              nodal_vectors(d[1], 5) = x[0];
-            }
-        }
+  }
+
+
+
+  template <int dim>
+  RigidModes<dim>::RigidModes(
+    const std::vector<dealii::Point<dim>> &points,
+    const std::vector<std::array<dealii::types::global_dof_index, dim>>
+                                         &vertex_dofs,
+    const dealii::types::global_dof_index n_dofs)
+  {
+    find_centre_and_length(points);
+    nodal_vectors = Eigen::MatrixXd::Zero(n_dofs, n_modes);
+    for (unsigned int v = 0; v < points.size(); ++v)
+      {
+        const auto  x = (points[v] - centre) / length;
+        const auto &d = vertex_dofs[v];
+        for (unsigned int c = 0; c < dim; ++c)
+          nodal_vectors(d[c], c) = 1.0;
+        if constexpr (dim == 2)
+          {
+            nodal_vectors(d[0], 2) = -x[1];
+            nodal_vectors(d[1], 2) = x[0];
+          }
+        else
+          {
+            // Rotations about the x, y and z axes: e_k x (x - c).
+            nodal_vectors(d[1], 3) = -x[2];
+            nodal_vectors(d[2], 3) = x[1];
+            nodal_vectors(d[0], 4) = x[2];
+            nodal_vectors(d[2], 4) = -x[0];
+            nodal_vectors(d[0], 5) = -x[1];
+            nodal_vectors(d[1], 5) = x[0];
+          }
+      }
     if (dim == 2)
       mode_names = {"x", "y", "rotation"};
     else
@@ -89,22 +116,15 @@ namespace dpana
   template <int dim>
   void
   RigidModes<dim>::find_centre_and_length(
-    const dealii::Triangulation<dim> &tria)
+    const std::vector<dealii::Point<dim>> &points)
   {
-    const auto  &vertices = tria.get_vertices();
-    unsigned int n_used   = 0;
-    centre                = dealii::Point<dim>();
-    for (unsigned int v = 0; v < vertices.size(); ++v)
-      if (tria.vertex_used(v))
-        {
-          centre += vertices[v];
-          ++n_used;
-        }
-    centre /= n_used;
+    centre = dealii::Point<dim>();
+    for (const auto &x : points)
+      centre += x;
+    centre /= points.size();
     length = 0;
-    for (unsigned int v = 0; v < vertices.size(); ++v)
-      if (tria.vertex_used(v))
-        length = std::max(length, vertices[v].distance(centre));
+    for (const auto &x : points)
+      length = std::max(length, x.distance(centre));
   }
 
 

@@ -98,14 +98,15 @@ namespace dpana
         "rows to MUMPS. One process ignores it.");
       prm.declare_entry(
         "Parallel mesh",
-        "whole",
+        "distributed",
         dealii::Patterns::Selection("whole|distributed"),
-        "With Parallel assembly = distributed on more than one rank, "
-        "whether each rank keeps the whole mesh of each body ('whole') or "
-        "only its cells and a layer of ghost cells around them "
-        "('distributed', a parallel::fullydistributed::Triangulation made "
-        "from the whole mesh, which is released after the set-up of the "
-        "body; doc/parallel.md). One process ignores it.");
+        "With Parallel assembly = distributed on more than one rank: "
+        "'distributed' each rank keeps only its cells of each body and a "
+        "layer of ghost cells around them (a "
+        "parallel::fullydistributed::Triangulation; rank 0 builds the whole "
+        "mesh for the set-up and releases it; doc/parallel.md); 'whole' "
+        "every rank keeps the whole mesh. The replicated assembly keeps the "
+        "whole mesh. One process ignores it.");
     }
 
 
@@ -163,10 +164,6 @@ namespace dpana
                              prm.get("Parallel assembly") == "distributed";
       distributed_mesh =
         distributed_assembly && prm.get("Parallel mesh") == "distributed";
-      if (prm.get("Parallel mesh") == "distributed" &&
-          prm.get("Parallel assembly") != "distributed")
-        throw InputError("Contact / Parallel mesh = distributed needs "
-                         "Parallel assembly = distributed");
       if (backend == Backend::mumps)
         parallel::check_mumps_available();
       out_of_core_directory = prm.get("Out-of-core directory");

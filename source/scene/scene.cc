@@ -161,17 +161,19 @@ namespace dpana
           const auto phase =
             phase_log.phase("assembly", "assembling " + body->name());
           phase_log.add("assembly", body->mesh_reading_time());
-          body->create_mesh();
           // The distributed assembly of the MPI route: the cells split over
-          // the ranks (a body needs at least one cell per rank).
-          if (with_contact && condensation_parameters.distributed_assembly)
-            {
-              parallel::check_ranks(body->name(),
-                                    body->triangulation().n_active_cells(),
-                                    parallel::n_world_ranks());
-              body->partition(MPI_COMM_WORLD,
-                              condensation_parameters.distributed_mesh);
-            }
+          // the ranks (a body needs at least one cell per rank); with a
+          // distributed mesh only rank 0 builds the whole mesh.
+          const bool distributed =
+            with_contact && condensation_parameters.distributed_assembly;
+          if (distributed)
+            body->partition(MPI_COMM_WORLD,
+                            condensation_parameters.distributed_mesh);
+          body->create_mesh();
+          if (distributed)
+            parallel::check_ranks(body->name(),
+                                  body->n_cells(),
+                                  parallel::n_world_ranks());
           body->setup();
           if (!with_contact)
             body->check_held();
@@ -186,8 +188,9 @@ namespace dpana
         {
           const auto peaks =
             dealii::Utilities::MPI::gather(MPI_COMM_WORLD, peak_memory_mb(), 0);
+          // In MB of 2^20 bytes, as the peak.
           const auto resident = dealii::Utilities::MPI::gather(
-            MPI_COMM_WORLD, condensation::resident_memory() / 1e6, 0);
+            MPI_COMM_WORLD, condensation::resident_memory() / 1048576.0, 0);
           if (!quiet && parallel::is_root())
             {
               const std::string how =

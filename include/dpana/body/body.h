@@ -42,6 +42,12 @@
 
 namespace dpana
 {
+  namespace internal
+  {
+    template <int dim>
+    struct WholeMeshData;
+  }
+
   /**
    * One linear elastic body: its simplex mesh, the P1 displacement space,
    * the stiffness matrix K and load vector f with the kinematic conditions
@@ -237,17 +243,20 @@ namespace dpana
      * only. system_matrix() is then this rank's share of K (the sum of the
      * shares over the ranks is K), system_rhs() the whole f (summed over
      * the ranks). The mesh itself stays whole on every rank, unless
-     * @p distribute_mesh: setup() then builds, from the whole mesh, a
-     * parallel::fullydistributed::Triangulation of this rank's cells and a
-     * layer of ghosts, on which the degrees of freedom are numbered
-     * (deal.II's numbering, contiguous on each rank) and the cells
-     * assembled, output and collected into contact surfaces. What needs
-     * the whole mesh is done by setup() before the whole mesh is released:
-     * the checks of the boundary names, the constraints, the rigid motions
-     * and the vertices of the concentrated forces, all in the numbering of
-     * the distributed degrees of freedom. The vectors of all degrees of
-     * freedom (f, u, the rigid motions) and the dofs of every vertex stay
-     * whole on every rank. With one rank nothing changes.
+     * @p distribute_mesh (call partition() before create_mesh() then):
+     * create_mesh() builds the whole mesh on rank 0 alone, and setup()
+     * sends every rank the description of its cells, of which it builds a
+     * parallel::fullydistributed::Triangulation with a layer of ghosts, on
+     * which the degrees of freedom are numbered (deal.II's numbering,
+     * contiguous on each rank) and the cells assembled, output and
+     * collected into contact surfaces. What needs the whole mesh rank 0
+     * computes before it releases it, in the numbering of one process: the
+     * checks of the boundary names, the constraints, the supports and the
+     * vertices of the concentrated forces (distributed_mesh.cc); every rank
+     * translates them into its numbering. The vectors of all degrees of
+     * freedom (f, u, the rigid motions), the points and dofs of every
+     * vertex and the constraints stay whole on every rank. With one rank
+     * nothing changes.
      */
     void
     partition(const MPI_Comm communicator, const bool distribute_mesh = false);
@@ -586,8 +595,18 @@ namespace dpana
     partition_cells();
     void
     number_dofs_by_subdomain();
+    // --- The distributed mesh (distributed_mesh.cc) ------------------------
+
     void
-    distribute();
+    create_whole_mesh_on_root();
+    void
+    set_up_distributed();
+    void
+    whole_mesh_data(internal::WholeMeshData<dim> &data);
+    void
+    number_serial_vertices(const std::vector<dealii::Point<dim>> &points);
+    void
+    apply_whole_mesh_data(const internal::WholeMeshData<dim> &data);
 
     dealii::types::boundary_id
     resolve(const std::string &boundary, const std::string &parameter) const;

@@ -91,6 +91,17 @@ namespace dpana
       const dealii::types::global_dof_index n_dofs);
 
     /**
+     * The same for vertices given by their @p points, vertex v carrying the
+     * degrees of freedom @p vertex_dofs[v] (a distributed mesh, whose
+     * vertices every rank knows this way).
+     */
+    RigidModes(
+      const std::vector<dealii::Point<dim>> &points,
+      const std::vector<std::array<dealii::types::global_dof_index, dim>>
+                                           &vertex_dofs,
+      const dealii::types::global_dof_index n_dofs);
+
+    /**
      * The matrix R of nodal vectors, one column per rigid motion.
      */
     const Eigen::MatrixXd &
@@ -128,7 +139,7 @@ namespace dpana
      * from it.
      */
     void
-    find_centre_and_length(const dealii::Triangulation<dim> &tria);
+    find_centre_and_length(const std::vector<dealii::Point<dim>> &points);
 
     /**
      * The small matrix C R of the homogeneous constraints applied to the

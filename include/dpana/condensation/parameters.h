@@ -57,7 +57,7 @@ namespace dpana
      *       set Memory limit (GB)      = 0
      *       set Parallel route         = auto
      *       set Parallel assembly      = distributed
-     *       set Parallel mesh          = whole
+     *       set Parallel mesh          = distributed
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -105,7 +105,8 @@ namespace dpana
       bool distributed_assembly = false;
       /**
        * Whether the mesh of each body is distributed too (`Parallel mesh =
-       * distributed`, Body::partition()): only with #distributed_assembly.
+       * distributed`, the default, Body::partition()): only with
+       * #distributed_assembly.
        */
       bool distributed_mesh = false;
       /**
