@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <sstream>
 
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
@@ -77,7 +78,10 @@ namespace dpana
 
   namespace
   {
-    // Sends @p description from rank 0 to rank @p rank.
+    // Sends @p description from rank 0 to rank @p rank, packed, in pieces
+    // of at most 2^30 bytes (an MPI count is an int).
+    constexpr unsigned long long piece = 1ULL << 30;
+
     template <int dim>
     void
     send_description(
@@ -90,7 +94,13 @@ namespace dpana
         dealii::Utilities::pack(description, false);
       const unsigned long long size = buffer.size();
       MPI_Send(&size, 1, MPI_UNSIGNED_LONG_LONG, rank, 0, communicator);
-      MPI_Send(buffer.data(), size, MPI_CHAR, rank, 1, communicator);
+      for (unsigned long long k = 0; k < size; k += piece)
+        MPI_Send(buffer.data() + k,
+                 static_cast<int>(std::min(piece, size - k)),
+                 MPI_CHAR,
+                 rank,
+                 1,
+                 communicator);
     }
 
 
@@ -108,30 +118,60 @@ namespace dpana
                communicator,
                MPI_STATUS_IGNORE);
       std::vector<char> buffer(size);
-      MPI_Recv(
-        buffer.data(), size, MPI_CHAR, 0, 1, communicator, MPI_STATUS_IGNORE);
+      for (unsigned long long k = 0; k < size; k += piece)
+        MPI_Recv(buffer.data() + k,
+                 static_cast<int>(std::min(piece, size - k)),
+                 MPI_CHAR,
+                 0,
+                 1,
+                 communicator,
+                 MPI_STATUS_IGNORE);
       return dealii::Utilities::unpack<
         dealii::TriangulationDescription::Description<dim, dim>>(buffer, false);
     }
 
 
 
-    // The serial vertex of each of @p points, which must be among the
-    // @p sorted points (serial vertices sorted lexicographically by point):
-    // the distributed mesh copies the points of the whole mesh.
+    // Points ordered lexicographically.
+    template <int dim>
+    bool
+    less(const dealii::Point<dim> &a, const dealii::Point<dim> &b)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (a[d] != b[d])
+          return a[d] < b[d];
+      return false;
+    }
+
+
+
+    // The serial vertices sorted by their points.
+    template <int dim>
+    std::vector<unsigned int>
+    sorted_by_point(const std::vector<dealii::Point<dim>> &points)
+    {
+      std::vector<unsigned int> sorted(points.size());
+      std::iota(sorted.begin(), sorted.end(), 0);
+      std::sort(sorted.begin(),
+                sorted.end(),
+                [&](const unsigned int a, const unsigned int b) {
+                  return less(points[a], points[b]);
+                });
+      return sorted;
+    }
+
+
+
+    // The serial vertex at the point @p x, which must be among the
+    // @p sorted points (sorted_by_point()): the distributed mesh copies the
+    // points of the whole mesh, whose vertices lie at distinct points
+    // (checked by rank 0).
     template <int dim>
     unsigned int
     find_vertex(const std::vector<dealii::Point<dim>> &points,
                 const std::vector<unsigned int>       &sorted,
                 const dealii::Point<dim>              &x)
     {
-      const auto less = [](const dealii::Point<dim> &a,
-                           const dealii::Point<dim> &b) {
-        for (unsigned int d = 0; d < dim; ++d)
-          if (a[d] != b[d])
-            return a[d] < b[d];
-        return false;
-      };
       const auto it =
         std::lower_bound(sorted.begin(),
                          sorted.end(),
@@ -239,6 +279,8 @@ namespace dpana
       }
     else
       description = receive_description<dim>(communicator_);
+    // The communicator is not part of the packed description.
+    description.comm = communicator_;
 
     local_mesh =
       std::make_unique<dealii::parallel::fullydistributed::Triangulation<dim>>(
@@ -283,6 +325,19 @@ namespace dpana
                         dealii::ExcInternalError());
           data.points[serial_vertex[v]] = tria.get_vertices()[v];
         }
+    // Every rank finds its vertices by their points: two vertices at one
+    // point (a mesh with coincident nodes) would be confused.
+    const std::vector<unsigned int> sorted = sorted_by_point(data.points);
+    for (unsigned int k = 1; k < sorted.size() && data.error.empty(); ++k)
+      if (!less(data.points[sorted[k - 1]], data.points[sorted[k]]))
+        {
+          std::ostringstream point;
+          point << data.points[sorted[k]];
+          data.error = name_ + ": two vertices of the mesh lie at the point (" +
+                       point.str() +
+                       "); a distributed mesh finds its vertices by their "
+                       "points (use Contact / Parallel mesh = whole)";
+        }
     for (const auto &line : constraints_.get_lines())
       {
         data.line_index.push_back(line.index);
@@ -316,16 +371,7 @@ namespace dpana
   Body<dim>::number_serial_vertices(
     const std::vector<dealii::Point<dim>> &points)
   {
-    std::vector<unsigned int> sorted(points.size());
-    std::iota(sorted.begin(), sorted.end(), 0);
-    std::sort(sorted.begin(),
-              sorted.end(),
-              [&](const unsigned int a, const unsigned int b) {
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (points[a][d] != points[b][d])
-                    return points[a][d] < points[b][d];
-                return false;
-              });
+    const std::vector<unsigned int> sorted = sorted_by_point(points);
     std::vector<dealii::types::global_dof_index> own;
     std::vector<dealii::types::global_dof_index> local(fe_.n_dofs_per_cell());
     std::vector<bool> seen(local_mesh->n_vertices(), false);

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/io/csv.h>
+#include <dpana/parallel/route.h>
 #include <dpana/scene/approach.h>
 #include <dpana/scene/references.h>
 
@@ -320,10 +321,11 @@ namespace dpana
       catch (const std::exception &)
         {
           // A mesh of a part of the sphere need not hold its centre.
-          std::cerr << "dpana: warning: Contact / Reference: the centre of a "
-                       "sphere or the contact point lies outside its mesh; "
-                       "the approach is not measured"
-                    << std::endl;
+          if (parallel::is_root())
+            std::cerr << "dpana: warning: Contact / Reference: the centre of "
+                         "a sphere or the contact point lies outside its "
+                         "mesh; the approach is not measured"
+                      << std::endl;
           return;
         }
       summary.estimates.approach_measured = true;

@@ -35,9 +35,10 @@ namespace dpana
 
 
 
-      // The MPI route with several ranks: every rank holds the whole mesh
-      // and solution and writes its share of each body's cells into rank
-      // 0's staging directory (output::write_bodies()). Rank 0 commits the
+      // The MPI route with several ranks: every rank holds its cells of
+      // each body (or the whole mesh) and the whole solution, and writes
+      // its share of each body's cells into rank 0's staging directory
+      // (output::write_bodies()). Rank 0 commits the
       // directory only after the barrier, when all pieces are written.
       template <int dim>
       void
@@ -414,8 +415,12 @@ namespace dpana
             condensers[b]->recover(summary_.result.r, alpha));
           bodies[b]->compute_stresses();
         }
+      // The approach is measured on every rank (with a distributed mesh,
+      // the ranks that hold the points evaluate the displacement there).
       // The summary needs A, which on the MPI route rank 0 alone holds and
       // which rank 0 alone prints and writes.
+      references.measure_approach(bodies, *surfaces[0], summary_);
+      const auto approach = summary_.estimates;
       if (condensation_parameters.route == parallel::Route::mpi &&
           !parallel::is_root())
         return;
@@ -423,7 +428,8 @@ namespace dpana
                 problem_,
                 surface_parameters.region_centre,
                 summary_);
-      references.measure_approach(bodies, *surfaces[0], summary_);
+      summary_.estimates.approach_measured = approach.approach_measured;
+      summary_.estimates.approach          = approach.approach;
       summary_.comparisons = references.compare(bodies, *surfaces[0], summary_);
     }
 

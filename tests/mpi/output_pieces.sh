@@ -6,7 +6,9 @@
 # summary.json that are sums or maxima over its cells (cells, vertices,
 # largest displacement and von Mises stress, reactions, load resultant)
 # are those of the serial run to a relative 1e-8: with a distributed mesh
-# each rank holds only its cells, and these are reduced over the ranks.
+# each rank holds only its cells, and these are reduced over the ranks. So
+# must the approach of a Hertz sphere be, if the scene measures it. The
+# files of NAME.files/ beside SCENE are copied beside it.
 #
 #   output_pieces.sh DPANA SCENE WORK_DIR MPIEXEC...
 set -eu
@@ -15,6 +17,12 @@ shift 3
 rm -rf "$work" && mkdir -p "$work/serial" "$work/mpi"
 cp "$scene" "$work/serial/scene.prm"
 cp "$scene" "$work/mpi/scene.prm"
+# The files a scene reads (its mesh) are in NAME.files/ beside it.
+files="${scene%.prm}.files"
+if [ -d "$files" ]; then
+  cp -r "$files/." "$work/serial/"
+  cp -r "$files/." "$work/mpi/"
+fi
 (cd "$work/serial" && "$dpana" scene.prm > log.txt)
 (cd "$work/mpi" && "$@" -np 2 "$dpana" scene.prm > log.txt)
 python3 - "$work" <<'PYTHON'
@@ -66,4 +74,14 @@ for serial_body, mpi_body in zip(*(s["bodies"] for s in summaries)):
             sys.exit("FAIL: %s %s: %s on two ranks, %s on one"
                      % (serial_body["name"], key, b, a))
     print("%s: %s as in the serial run" % (serial_body["name"], ", ".join(keys)))
+# The approach of a Hertz sphere: the displacement at two points, which
+# with a distributed mesh only the ranks holding them can evaluate.
+approaches = [s["contact"].get("estimates", {}).get("approach")
+              for s in summaries]
+if approaches[0] is not None or approaches[1] is not None:
+    if None in approaches or abs(approaches[0] - approaches[1]) > \
+            1e-8 * abs(approaches[0]):
+        sys.exit("FAIL: approach %s on two ranks, %s on one"
+                 % (approaches[1], approaches[0]))
+    print("approach %.9g mm as in the serial run" % approaches[0])
 PYTHON
