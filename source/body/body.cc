@@ -132,9 +132,13 @@ namespace dpana
                                    "parameters of a Geometry subsection."));
     tria.clear();
     names = geometry->boundary_names();
+    // What the geometry read to build the mesh (a mesh file's nodes and
+    // cells) is freed once the mesh is built: with a distributed mesh on
+    // every rank, though only rank 0 builds it.
     if (n_parts_ > 1 && distribute_mesh_)
       {
         create_whole_mesh_on_root();
+        geometry->release_mesh_data();
         return;
       }
     try
@@ -145,6 +149,7 @@ namespace dpana
       {
         throw InputError(name_ + " / " + e.what());
       }
+    geometry->release_mesh_data();
     n_whole_cells    = tria.n_active_cells();
     n_whole_vertices = tria.n_used_vertices();
   }

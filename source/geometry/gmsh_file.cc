@@ -171,6 +171,16 @@ namespace dpana
 
 
 
+    template <int dim>
+    void
+    GmshFile<dim>::release_mesh_data()
+    {
+      mesh     = GmshMesh();
+      released = true;
+    }
+
+
+
     // The mesh read: the same cells, material ids and boundary ids as
     // GridIn::read_msh gives, cells of negative measure turned as it does;
     // nodes that no cell uses (GridIn keeps them, unused) are dropped.
@@ -180,6 +190,9 @@ namespace dpana
       dealii::Triangulation<dim> &tria,
       const unsigned int          n_global_refinements) const
     {
+      AssertThrow(!released,
+                  dealii::ExcMessage("GmshFile::create_triangulation() after "
+                                     "release_mesh_data()"));
       auto                vertices = vertices_of<dim>(mesh);
       auto                cells    = cells_of<dim>(mesh);
       dealii::SubCellData boundary = boundary_of<dim>(mesh);

@@ -127,6 +127,16 @@ namespace dpana
         return shape->reading_time();
       }
 
+      /**
+       * Frees what the shape keeps only to build its mesh (Shape::
+       * release_mesh_data()), once the mesh is built.
+       */
+      void
+      release_mesh_data()
+      {
+        shape->release_mesh_data();
+      }
+
     private:
       std::string                 type_name;
       unsigned int                n_global_refinements;

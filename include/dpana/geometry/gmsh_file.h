@@ -70,13 +70,20 @@ namespace dpana
       double
       reading_time() const override;
 
+      /**
+       * Frees the nodes and cells read (about 50 bytes per dof).
+       */
+      void
+      release_mesh_data() override;
+
     private:
       std::string                                       mesh_file;
       std::string                                       parameter;
       std::map<std::string, dealii::types::boundary_id> names;
       unsigned long long                                n_cells = 0;
       GmshMesh                                          mesh;
-      double                                            seconds = 0;
+      bool                                              released = false;
+      double                                            seconds  = 0;
 
       void
       read_mesh();

@@ -89,6 +89,17 @@ namespace dpana
       {
         return 0.0;
       }
+
+      /**
+       * Frees what the shape keeps only to build its mesh (the nodes and
+       * cells read from a mesh file), once the mesh is built; nothing for
+       * the generated shapes. create_triangulation() may not be called
+       * afterwards.
+       */
+      virtual void
+      release_mesh_data()
+      {
+      }
     };
 
 
