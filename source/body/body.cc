@@ -2,8 +2,9 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 //
-// The body: its parameters and mesh, the set-up of its degrees of freedom
-// (the kinematic conditions are in constraints.cc, the rigid motions in
+// The body: its parameters, the building of its mesh (the mesh itself and
+// its partition over ranks are in body_mesh.cc), the set-up of its degrees of
+// freedom (the kinematic conditions are in constraints.cc, the rigid motions in
 // rigid_modes.cc), the solution, and the explicit instantiation of the
 // class for dim = 2 and 3. The assembly and the postprocessing are in
 // assembly.cc and postprocessing.cc.
@@ -17,14 +18,10 @@
 
 #include <deal.II/fe/fe_simplex_p.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
 #include <cmath>
-#include <set>
-#include <sstream>
 
 namespace dpana
 {
@@ -135,7 +132,7 @@ namespace dpana
     // What the geometry read to build the mesh (a mesh file's nodes and
     // cells) is freed once the mesh is built: with a distributed mesh on
     // every rank, though only rank 0 builds it.
-    if (n_parts_ > 1 && distribute_mesh_)
+    if (mesh_is_distributed())
       {
         create_whole_mesh_on_root();
         geometry->release_mesh_data();
@@ -156,50 +153,10 @@ namespace dpana
 
 
 
-  template <int dim>
-  std::string
-  Body<dim>::geometry_description() const
-  {
-    std::ostringstream s;
-    if (geometry)
-      s << geometry->description() << ", ";
-    const bool whole = !local_mesh;
-    s << (whole ? tria.n_active_cells() : n_whole_cells)
-      << (dim == 2 ? " triangles" : " tetrahedra") << ", "
-      << (whole ? tria.n_used_vertices() : n_whole_vertices) << " vertices";
-    return s.str();
-  }
-
-
-
   // @sect3{Named boundaries}
 
-  // A boundary name used by a parameter must be one of the names of the
-  // mesh, and some boundary face must carry it: a condition on an empty set
-  // of faces would silently do nothing.
-  template <int dim>
-  dealii::types::boundary_id
-  Body<dim>::resolve(const std::string &boundary,
-                     const std::string &parameter) const
-  {
-    const auto it = names.find(boundary);
-    if (it == names.end())
-      {
-        std::string list;
-        for (const auto &[n, id] : names)
-          list += (list.empty() ? "" : ", ") + n;
-        throw InputError(parameter + ": no boundary named '" + boundary +
-                         "' (this body has: " + list + ")");
-      }
-    for (const auto &face : tria.active_face_iterators())
-      if (face->at_boundary() && face->boundary_id() == it->second)
-        return it->second;
-    throw InputError(parameter + ": no face of the mesh carries boundary '" +
-                     boundary + "' (id " + std::to_string(it->second) + ")");
-  }
-
-
-
+  // Every boundary name the kinematic conditions and the loads use must be
+  // one the mesh has and some face carries (BodyMesh::resolve()).
   template <int dim>
   void
   Body<dim>::check_boundary_names() const
@@ -212,20 +169,6 @@ namespace dpana
 
 
 
-  template <int dim>
-  std::vector<unsigned int>
-  Body<dim>::boundary_vertices(const dealii::types::boundary_id id) const
-  {
-    std::set<unsigned int> vertices;
-    for (const auto &face : tria.active_face_iterators())
-      if (face->at_boundary() && face->boundary_id() == id)
-        for (const unsigned int v : face->vertex_indices())
-          vertices.insert(face->vertex_index(v));
-    return {vertices.begin(), vertices.end()};
-  }
-
-
-
   // @sect3{Set-up: degrees of freedom, constraints, rigid motions}
 
   template <int dim>
@@ -234,7 +177,7 @@ namespace dpana
   {
     local_mesh.reset();
     serial_index.clear();
-    if (n_parts_ > 1 && distribute_mesh_)
+    if (mesh_is_distributed())
       {
         set_up_distributed();
         material_.check(name_ + " / Material");
@@ -267,46 +210,6 @@ namespace dpana
     matrix.reinit(sparsity_pattern);
     rhs.reinit(dof_handler_.n_dofs());
     u.reinit(dof_handler_.n_dofs());
-  }
-
-
-
-  // @sect3{Partition over MPI ranks}
-  //
-  // partition() only records the ranks; setup() partitions, when the mesh
-  // is complete.
-  template <int dim>
-  void
-  Body<dim>::partition(const MPI_Comm communicator, const bool distribute_mesh)
-  {
-    communicator_    = communicator;
-    distribute_mesh_ = distribute_mesh;
-    n_parts_         = dealii::Utilities::MPI::n_mpi_processes(communicator);
-    this_part_       = dealii::Utilities::MPI::this_mpi_process(communicator);
-  }
-
-
-
-  // The cells split into n_parts_ subdomains of about equal size with few
-  // faces between them (METIS on the graph of cells that share a face).
-  // Rank 0 partitions and sends the subdomain of every active cell to the
-  // others, so that all ranks hold the same partition whatever the
-  // partitioner does with its ties.
-  template <int dim>
-  void
-  Body<dim>::partition_cells()
-  {
-    std::vector<unsigned int> subdomain(tria.n_active_cells());
-    if (this_part_ == 0)
-      {
-        dealii::GridTools::partition_triangulation(n_parts_, tria);
-        for (const auto &cell : tria.active_cell_iterators())
-          subdomain[cell->active_cell_index()] = cell->subdomain_id();
-      }
-    MPI_Bcast(
-      subdomain.data(), subdomain.size(), MPI_UNSIGNED, 0, communicator_);
-    for (const auto &cell : tria.active_cell_iterators())
-      cell->set_subdomain_id(subdomain[cell->active_cell_index()]);
   }
 
 

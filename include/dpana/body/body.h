@@ -4,14 +4,13 @@
 #ifndef dpana_body_body_h
 #define dpana_body_body_h
 
+#include <dpana/body/body_mesh.h>
 #include <dpana/body/boundary_conditions.h>
 #include <dpana/body/loads.h>
 #include <dpana/body/material.h>
 #include <dpana/body/rigid_modes.h>
-#include <dpana/geometry/geometry.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -22,15 +21,11 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe.h>
 
-#include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
-#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <Eigen/Dense>
 
@@ -49,7 +44,8 @@ namespace dpana
   }
 
   /**
-   * One linear elastic body: its simplex mesh, the P1 displacement space,
+   * One linear elastic body: its simplex mesh (BodyMesh, with the
+   * partition over MPI ranks), the P1 displacement space,
    * the stiffness matrix K and load vector f with the kinematic conditions
    * eliminated, the rigid motions those conditions leave free, and, once
    * solved, the displacement and the stresses.
@@ -90,7 +86,7 @@ namespace dpana
    * are any.
    */
   template <int dim>
-  class Body
+  class Body : public BodyMesh<dim>
   {
   public:
     /**
@@ -99,6 +95,10 @@ namespace dpana
      * description.
      */
     using RigidMode = dpana::RigidMode;
+
+    // The mesh and its partition (BodyMesh), public as they are there.
+    using BodyMesh<dim>::triangulation;
+    using BodyMesh<dim>::boundary_vertices;
 
     /**
      * A concentrated force as applied: the requested point, the mesh vertex
@@ -139,71 +139,6 @@ namespace dpana
     create_mesh();
 
     /**
-     * The mesh, for programs that build it themselves; they must then call
-     * set_boundary_names(). After setup() of a body whose mesh is
-     * distributed (partition()), the cells of this rank and a layer of
-     * ghost cells around them (a parallel::fullydistributed::Triangulation).
-     */
-    dealii::Triangulation<dim> &
-    triangulation()
-    {
-      return local_mesh ? *local_mesh : tria;
-    }
-    const dealii::Triangulation<dim> &
-    triangulation() const
-    {
-      return local_mesh ? *local_mesh : tria;
-    }
-
-    /**
-     * The number of cells and of vertices of the whole mesh, also when it
-     * is distributed (known after setup()).
-     */
-    unsigned int
-    n_cells() const
-    {
-      return n_whole_cells;
-    }
-    unsigned int
-    n_vertices() const
-    {
-      return n_whole_vertices;
-    }
-
-    /**
-     * The boundary names of the mesh and their boundary ids.
-     */
-    void
-    set_boundary_names(
-      const std::map<std::string, dealii::types::boundary_id> &new_names)
-    {
-      names = new_names;
-    }
-
-    const std::map<std::string, dealii::types::boundary_id> &
-    boundary_names() const
-    {
-      return names;
-    }
-
-    /**
-     * A one-line description of the geometry (for the log).
-     */
-    std::string
-    geometry_description() const;
-
-    /**
-     * The wall time of reading the body's mesh file while the parameters
-     * were read (s; 0 for a generated mesh), which the scene counts in the
-     * assembly phase.
-     */
-    double
-    mesh_reading_time() const
-    {
-      return geometry->reading_time();
-    }
-
-    /**
      * The components of the body (its material, kinematic conditions and
      * loads), for programs that set them up themselves, and its name.
      */
@@ -231,58 +166,6 @@ namespace dpana
     name() const
     {
       return name_;
-    }
-
-    /**
-     * Splits the body over the ranks of @p communicator for a distributed
-     * assembly (doc/parallel.md), before setup(). setup() then partitions
-     * the cells (METIS, through GridTools::partition_triangulation, on rank
-     * 0, the subdomain of each cell sent to the others) and numbers the
-     * degrees of freedom subdomain by subdomain, so that the dofs of each
-     * rank are contiguous; assemble() assembles the cells of this rank
-     * only. system_matrix() is then this rank's share of K (the sum of the
-     * shares over the ranks is K), system_rhs() the whole f (summed over
-     * the ranks). The mesh itself stays whole on every rank, unless
-     * @p distribute_mesh (call partition() before create_mesh() then):
-     * create_mesh() builds the whole mesh on rank 0 alone, and setup()
-     * sends every rank the description of its cells, of which it builds a
-     * parallel::fullydistributed::Triangulation with a layer of ghosts, on
-     * which the degrees of freedom are numbered (deal.II's numbering,
-     * contiguous on each rank) and the cells assembled, output and
-     * collected into contact surfaces. What needs the whole mesh rank 0
-     * computes before it releases it, in the numbering of one process: the
-     * checks of the boundary names, the constraints, the supports and the
-     * vertices of the concentrated forces (distributed_mesh.cc); every rank
-     * translates them into its numbering. The vectors of all degrees of
-     * freedom (f, u, the rigid motions), the points and dofs of every
-     * vertex and the constraints stay whole on every rank. With one rank
-     * nothing changes.
-     */
-    void
-    partition(const MPI_Comm communicator, const bool distribute_mesh = false);
-
-    /**
-     * The number of parts of partition() (1 if it was not called) and the
-     * part of this rank, which is the subdomain id of its cells.
-     */
-    unsigned int
-    n_parts() const
-    {
-      return n_parts_;
-    }
-    unsigned int
-    this_part() const
-    {
-      return this_part_;
-    }
-
-    /**
-     * The ranks of partition() (MPI_COMM_SELF if it was not called).
-     */
-    MPI_Comm
-    communicator() const
-    {
-      return communicator_;
     }
 
     /**
@@ -415,12 +298,6 @@ namespace dpana
     }
 
     /**
-     * The vertices of the faces of a boundary id.
-     */
-    std::vector<unsigned int>
-    boundary_vertices(const dealii::types::boundary_id id) const;
-
-    /**
      * The nodal vectors of the rigid motions, one per column: translations
      * x, y (, z), then the rotation(s) about the centroid of the vertices,
      * scaled so that the largest nodal displacement of a rotation is 1.
@@ -532,23 +409,26 @@ namespace dpana
     max_displacement() const;
 
   private:
+    // The mesh and its partition (BodyMesh), used by name in the set-up.
+    using BodyMesh<dim>::geometry;
+    using BodyMesh<dim>::tria;
+    using BodyMesh<dim>::local_mesh;
+    using BodyMesh<dim>::n_whole_cells;
+    using BodyMesh<dim>::n_whole_vertices;
+    using BodyMesh<dim>::names;
+    using BodyMesh<dim>::communicator_;
+    using BodyMesh<dim>::n_parts_;
+    using BodyMesh<dim>::this_part_;
+    using BodyMesh<dim>::resolve;
+    using BodyMesh<dim>::partition_cells;
+    using BodyMesh<dim>::mesh_is_distributed;
+
     // The conditions acting at one supported vertex: (boundary, direction
     // of the support force).
     using SupportDirections =
       std::vector<std::pair<std::string, dealii::Tensor<1, dim>>>;
 
     std::string name_;
-
-    std::unique_ptr<geometry::Geometry<dim>> geometry;
-    // The whole mesh; with a distributed mesh, released by setup() once the
-    // distributed one (local_mesh) is made.
-    dealii::Triangulation<dim> tria;
-    std::unique_ptr<dealii::parallel::fullydistributed::Triangulation<dim>>
-                                                      local_mesh;
-    bool                                              distribute_mesh_ = false;
-    unsigned int                                      n_whole_cells    = 0;
-    unsigned int                                      n_whole_vertices = 0;
-    std::map<std::string, dealii::types::boundary_id> names;
 
     Material                material_;
     BoundaryConditions<dim> bcs;
@@ -584,15 +464,9 @@ namespace dpana
 
     // --- Set-up (body.cc) ---------------------------------------------------
 
-    // The partition of partition(): the ranks, the number of parts and this
-    // rank's part; for a partitioned body, the serial number of each dof.
-    MPI_Comm                                     communicator_ = MPI_COMM_SELF;
-    unsigned int                                 n_parts_      = 1;
-    unsigned int                                 this_part_    = 0;
+    // For a partitioned body, the serial number of each dof.
     std::vector<dealii::types::global_dof_index> serial_index;
 
-    void
-    partition_cells();
     void
     number_dofs_by_subdomain();
     // --- The distributed mesh (distributed_mesh.cc) ------------------------
@@ -608,8 +482,6 @@ namespace dpana
     void
     apply_whole_mesh_data(const internal::WholeMeshData<dim> &data);
 
-    dealii::types::boundary_id
-    resolve(const std::string &boundary, const std::string &parameter) const;
     void
     check_boundary_names() const;
     void
