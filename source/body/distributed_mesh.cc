@@ -432,9 +432,7 @@ namespace dpana
         constraints_.set_inhomogeneity(i, data.line_inhomogeneity[k]);
       }
     constraints_.close();
-    support_directions.clear();
-    for (const auto &[v, directions] : data.support_directions)
-      support_directions[v] = directions;
+    support_directions = data.support_directions;
     concentrated.clear();
     concentrated_vertex.clear();
     for (unsigned int k = 0; k < data.forces.size(); ++k)

@@ -39,7 +39,40 @@ namespace dpana
 
   // @sect3{The nodal vectors of the rigid motions}
 
-  // The used vertices of the mesh that carry dofs, in their order.
+  namespace
+  {
+    // The used vertices of the mesh that carry dofs, in their order.
+    template <int dim>
+    std::vector<unsigned int>
+    vertices_with_dofs(
+      const dealii::Triangulation<dim> &tria,
+      const std::vector<std::array<dealii::types::global_dof_index, dim>>
+        &vertex_dofs)
+    {
+      std::vector<unsigned int> vertices;
+      for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+        if (tria.vertex_used(v) &&
+            vertex_dofs[v][0] != dealii::numbers::invalid_dof_index)
+          vertices.push_back(v);
+      return vertices;
+    }
+
+    // The entries of @p all at @p indices, in their order.
+    template <typename T>
+    std::vector<T>
+    select(const std::vector<T> &all, const std::vector<unsigned int> &indices)
+    {
+      std::vector<T> selected;
+      selected.reserve(indices.size());
+      for (const unsigned int i : indices)
+        selected.push_back(all[i]);
+      return selected;
+    }
+  } // namespace
+
+
+
+  // The mesh: the points and dofs of its used vertices that carry dofs.
   template <int dim>
   RigidModes<dim>::RigidModes(
     const dealii::Triangulation<dim> &tria,
@@ -47,22 +80,8 @@ namespace dpana
                                          &vertex_dofs,
     const dealii::types::global_dof_index n_dofs)
     : RigidModes(
-        [&]() {
-          std::vector<dealii::Point<dim>> points;
-          for (unsigned int v = 0; v < tria.n_vertices(); ++v)
-            if (tria.vertex_used(v) &&
-                vertex_dofs[v][0] != dealii::numbers::invalid_dof_index)
-              points.push_back(tria.get_vertices()[v]);
-          return points;
-        }(),
-        [&]() {
-          std::vector<std::array<dealii::types::global_dof_index, dim>> dofs;
-          for (unsigned int v = 0; v < tria.n_vertices(); ++v)
-            if (tria.vertex_used(v) &&
-                vertex_dofs[v][0] != dealii::numbers::invalid_dof_index)
-              dofs.push_back(vertex_dofs[v]);
-          return dofs;
-        }(),
+        select(tria.get_vertices(), vertices_with_dofs<dim>(tria, vertex_dofs)),
+        select(vertex_dofs, vertices_with_dofs<dim>(tria, vertex_dofs)),
         n_dofs)
   {
   }
