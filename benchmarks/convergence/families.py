@@ -127,6 +127,20 @@ def sphere(levels, bodies=(("Body 1", ()),)):
         for body, options in bodies}) for level in levels]
 
 
+def nested_sphere(refinements, bodies=(("Body 1", ()),), entries=(),
+                  base=-2):
+    """The quarter spheres' meshes of make_sphere.py level `base`, split k
+    times into 8 (--refine k): one nested mesh family, in which every
+    region of the body is refined with the contact cap. h = 2^(-base/2 - k),
+    the h of the level family at the same element size on the cap.
+    `entries`: more (path, value) entries of every level."""
+    return [(2.0 ** (-base / 2 - k), {
+        **{f"{body}/Geometry/Gmsh/Mesh file":
+           SphereMesh(base, *options, "--refine", str(k))
+           for body, options in bodies},
+        **dict(entries)}) for k in refinements]
+
+
 def contact_refinements(ms, body="Body 1", shape="Right half disc"):
     """Coarser levels: no global refinement, m < 5 contact refinements;
     h = 2^(5 - m) in the units of global_refinements()."""
@@ -304,6 +318,20 @@ FAMILIES.append(Family(
     exact={"resultant": 75000.0},
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN (3D Hertz: "
          "a = 4.050 mm, p0 = 8730 MPa)"))
+# The same sphere on nested meshes: the level-(-2) mesh split k times. The
+# level family refines the cap but keeps the growth of the element size
+# away from it (sphere.geo's Growth), so that the mesh a contact radius
+# away hardly changes; the nested family refines it everywhere.
+FAMILIES.append(Family(
+    "hertz_sphere_rigid_nested", "hertz_sphere_rigid.prm", 3,
+    nested_sphere(range(0, 3)),
+    # 641 547 dofs: the blocked solves need 14 GB, the Schur route more.
+    nested_sphere([3], entries=[("Contact/Condensation method",
+                                 "blocked solves")]),
+    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
+    exact={"resultant": 75000.0},
+    note="Quarter sphere R = 40 on a rigid plane, P = 300 kN, on nested "
+         "meshes (make_sphere.py --level -2 --refine k)"))
 
 # The two equal spheres: the upper one on dpana's sphere mesh, the lower one
 # (the mirror image) on the mesh of the scene's mesh line
@@ -320,5 +348,15 @@ for name, mu in (("hertz_two_spheres", "frictionless"),
         note=f"Two equal spheres R = 40, P = 300 kN, {mu} (3D Hertz as "
              "for one sphere on a rigid plane: a = 4.050 mm, "
              "p0 = 8730 MPa)"))
+# The two frictionless spheres on nested meshes, both of level -2 split k
+# times (k = 3: about 1.4 million dofs, two bodies the size of the one
+# sphere's level 3, which alone took 14 GB).
+FAMILIES.append(Family(
+    "hertz_two_spheres_nested", "hertz_two_spheres.prm", 3,
+    nested_sphere(range(0, 3), (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
+    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
+    exact={"resultant": 75000.0},
+    note="Two equal spheres R = 40, P = 300 kN, frictionless, on nested "
+         "meshes (make_sphere.py --level -2 --refine k)"))
 
 BY_NAME = {f.name: f for f in FAMILIES}

@@ -9,18 +9,30 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def write_mesh(program, geo, dimension, values, output, key_suffix="",
-               after=None):
+               after=None, refinements=0):
     """Runs `gmsh -DIMENSION` on HERE/GEO with `-setnumber NAME VALUE` for
-    each of `values`, writing `output`. The command (with `key_suffix`) is
-    stored in OUTPUT.args; an existing output with the same stored command
-    is kept. `after(output)` runs on a new mesh before the command is
-    stored. A failing gmsh stops with one line `PROGRAM: error: ...`."""
-    command = ["gmsh", "-%d" % dimension, "-v", "2",
-               os.path.join(HERE, geo), "-o", output]
+    each of `values`, writing `output`. With `refinements` > 0 the .geo file
+    meshes, refines and saves the mesh itself (its numbers Refinements and
+    string Output; `gmsh -parse_and_exit`): gmsh's command line would mesh
+    the volume again after the script, on the refined surfaces. The command
+    (with `key_suffix`) is stored in OUTPUT.args; an existing output with
+    the same stored command is kept. `after(output)` runs on a new mesh
+    before the command is stored. A failing gmsh stops with one line
+    `PROGRAM: error: ...`."""
+    command = ["gmsh", "-v", "2", os.path.join(HERE, geo)]
+    if refinements > 0:
+        values = dict(values, Refinements=refinements)
+    else:
+        command[1:1] = ["-%d" % dimension]
     for name, value in sorted(values.items()):
         command[1:1] = ["-setnumber", name, repr(float(value))]
+    key = " ".join(command) + key_suffix
+    if refinements > 0:
+        command += ["-setstring", "Output", os.path.abspath(output),
+                    "-parse_and_exit"]
+    else:
+        command += ["-o", output]
     stamp = output + ".args"
-    key = " ".join(command[:-2]) + key_suffix
     if (os.path.exists(output) and os.path.exists(stamp)
             and open(stamp).read() == key):
         return
@@ -30,6 +42,8 @@ def write_mesh(program, geo, dimension, values, output, key_suffix="",
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     except (OSError, subprocess.CalledProcessError) as e:
         sys.exit("%s: error: gmsh failed (%s)" % (program, e))
+    if not os.path.exists(output):
+        sys.exit("%s: error: gmsh wrote no mesh to %s" % (program, output))
     if after is not None:
         after(output)
     with open(stamp, "w") as f:

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the gmsh mesh of the quarter sphere of the 3D Hertz scenes.
 
-    make_sphere.py OUT.msh [--side 1|-1] [--level L] [--set NAME=VALUE ...]
+    make_sphere.py OUT.msh [--side 1|-1] [--level L] [--refine K]
+                   [--set NAME=VALUE ...]
 
 Runs gmsh (Debian package `gmsh`) on scripts/meshes/sphere.geo, next to this
 script, and prints the size of the mesh it wrote: nodes, tetrahedra, the
@@ -10,7 +11,11 @@ contact unknowns they give with 8 triangles per contact element (3 per
 element; dpana merges the small groups its grouping of an unstructured
 surface leaves into their neighbours, so that there are somewhat fewer). `--level L` sets SizeFactor = 2^(-L/2), so that each level has
 about 2^(3/2) = 2.8 times the unknowns of the one before (level 0: the
-sizes of sphere.geo); `--set` passes any parameter of sphere.geo (R, Side,
+sizes of sphere.geo); each level is a new unstructured mesh. `--refine K`
+instead splits every tetrahedron of the level's mesh into 8, K times, with
+the new boundary nodes on the sphere (gmsh's RefineMesh): meshes nested in
+the level's mesh, h halved and about 7 times the unknowns per refinement,
+for convergence studies that need one mesh family. `--set` passes any parameter of sphere.geo (R, Side,
 CapRadius, PoleRadius, SizeContact, SizeFar, Growth, SizeFactor,
 Algorithm3D). An
 existing OUT.msh made with the same parameters is kept (the parameters are
@@ -38,12 +43,17 @@ def main():
     parser.add_argument("output")
     parser.add_argument("--side", type=int, default=1, choices=(1, -1))
     parser.add_argument("--level", type=float, default=0)
+    parser.add_argument("--refine", type=int, default=0, metavar="K",
+                        help="split every tetrahedron into 8, K times")
     parser.add_argument("--set", action="append", default=[],
                         metavar="NAME=VALUE")
     parser.add_argument("--digits", type=int, default=0,
                         help="round the node coordinates to this many "
                         "significant digits (a smaller file, for tests)")
     args = parser.parse_args()
+    if args.refine < 0:
+        sys.exit("make_sphere.py: error: --refine %d: must be 0 or more"
+                 % args.refine)
 
     values = {"Side": args.side, "SizeFactor": 2 ** (-args.level / 2)}
     for item in args.set:
@@ -57,7 +67,8 @@ def main():
         def round_nodes(path):
             round_coordinates(path, args.digits)
     write_mesh("make_sphere.py", "sphere.geo", 3, values, args.output,
-               key_suffix=" digits %d" % args.digits, after=round_nodes)
+               key_suffix=" digits %d" % args.digits, after=round_nodes,
+               refinements=args.refine)
 
     n_nodes, counts = element_counts(args.output)
     # Tetrahedra (gmsh type 4); the contact cap is the triangles (type 2)

@@ -21,6 +21,13 @@
 //   Algorithm3D gmsh's 3D algorithm: 1 Delaunay (the default: the same mesh
 //               at every run), 10 HXT (parallel and faster on big meshes,
 //               but not reproducible from run to run)
+//   Refinements 0: the mesh is made by the command line (gmsh -3 ... -o);
+//               k > 0: this file meshes, splits every tetrahedron into 8
+//               k times (gmsh's RefineMesh, which puts the new boundary
+//               nodes on the sphere) and saves the mesh to the string
+//               Output (gmsh -setstring Output FILE -parse_and_exit):
+//               meshes nested in the mesh of Refinements = 0, h halved
+//               per refinement
 //
 // Named boundaries (physical surfaces): symmetry_x (the plane x = 0),
 // symmetry_z (z = 0), contact (the cap around the contact point), pole (the
@@ -34,9 +41,10 @@ SetFactory("OpenCASCADE");
 Geometry.OCCBoundsUseStl = 1; // tight bounding boxes for the selections below
 
 DefineConstant[
+  Output = "sphere.msh",
   R = 40, Side = 1, CapRadius = 6, PoleRadius = 4,
   SizeContact = 0.4, SizeFar = 6, Growth = 0.25, SizeFactor = 1,
-  Algorithm3D = 1
+  Algorithm3D = 1, Refinements = 0
 ];
 
 e  = 1e-6 * R;
@@ -116,3 +124,14 @@ Mesh.Optimize = 1;
 Mesh.MshFileVersion = 2.2;
 Mesh.Binary = 0;
 Mesh.SaveAll = 0;            // only the physical groups
+
+// A nested family: the mesh above, refined uniformly. gmsh's command line
+// (-3) would mesh the volume again after this file, so the file saves the
+// refined mesh itself and is run with -parse_and_exit.
+If (Refinements > 0)
+  Mesh 3;
+  For i In {1:Refinements}
+    RefineMesh;
+  EndFor
+  Save Str(Output);
+EndIf

@@ -20,6 +20,11 @@ symmetry conditions, the cap `contact` (3, r <= 6 mm) the candidate nodes.
             lower cap the master side, augmentation r = E. Hertz with
             1/R* = 2/R and 1/E* = 2 (1 - nu^2)/E: the same a and p0.
   --mu MU   Coulomb friction MU (hertz_two_spheres_mu03.prm: 0.3).
+  --nested BASE
+            the nested meshes of the families hertz_sphere_rigid_nested
+            and hertz_two_spheres_nested: --level k is the mesh of
+            make_sphere.py --level BASE --refine k (with --two, the lower
+            sphere's too).
 Residual 1e-10 of the load.
 
 Prints one JSON record (see hertz.py).
@@ -50,14 +55,24 @@ def main():
                         help="two spheres instead of one on the plane")
     parser.add_argument("--mu", type=float, default=0.0,
                         help="Coulomb friction coefficient (default 0)")
+    parser.add_argument("--nested", type=float, metavar="BASE",
+                        help="--level k: the mesh of level BASE split k "
+                        "times")
     args = parser.parse_args()
     if args.mu < 0:
         parser.error("--mu must be >= 0")
+    if args.nested is not None and args.level < 0:
+        parser.error("--nested needs --level >= 0 (refinements)")
     prm = os.path.join(HERE, "..", "..", "..", "prm")
     start = time.perf_counter()
-    msh = [SphereMesh(args.level).path(prm)]
+    if args.nested is not None:
+        base = int(args.nested) if args.nested.is_integer() else args.nested
+        level, refine = base, ("--refine", str(args.level))
+    else:
+        level, refine = args.level, ()
+    msh = [SphereMesh(level, *refine).path(prm)]
     if args.two:
-        msh.append(SphereMesh(args.level, *LOWER).path(prm))
+        msh.append(SphereMesh(level, *LOWER, *refine).path(prm))
     meshing = time.perf_counter() - start
     import getfem as gf
     start = time.perf_counter()

@@ -42,8 +42,13 @@ families.py):
                             (paired with dpana's graded meshes)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
   hertz_sphere_rigid        sphere.py (the quarter sphere on the rigid plane)
+  hertz_sphere_rigid_nested sphere.py --nested -2 (the same on the nested
+                            meshes: level k = make_sphere.py --level -2
+                            --refine k)
   hertz_two_spheres, hertz_two_spheres_mu03
                             sphere.py --two [--mu 0.3] (two equal spheres)
+  hertz_two_spheres_nested  sphere.py --two --nested -2 (the same on nested
+                            meshes)
 
   sweep.py --out results [--full] [--repeat N] [FAMILY ...]
 """
@@ -108,7 +113,13 @@ FAMILIES = {
                           "1"], range(0, 4), [4]),
     "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
     "hertz_sphere_rigid": (["sphere.py"], range(0, 4), [4]),
+    # Level 3 (641 547 dofs, 8 times the largest sphere GetFEM has run
+    # here) is not run.
+    "hertz_sphere_rigid_nested": (["sphere.py", "--nested", "-2"],
+                                  range(0, 3), []),
     "hertz_two_spheres": (["sphere.py", "--two"], range(0, 3), [3]),
+    "hertz_two_spheres_nested": (["sphere.py", "--two", "--nested", "-2"],
+                                 range(0, 3), []),
     "hertz_two_spheres_mu03": (["sphere.py", "--two", "--mu", "0.3"],
                                range(0, 3), [3]),
 }
@@ -130,6 +141,15 @@ H = {"hertz.py": lambda level: 2.0 ** -level,
      "sphere.py": lambda level: 2.0 ** (-level / 2)}
 
 
+def h_of(args, level):
+    """h of a level; sphere.py --nested BASE: level k is the mesh of level
+    BASE split k times, h = 2^(-BASE/2 - k) (families.nested_sphere)."""
+    if "--nested" in args:
+        base = float(args[args.index("--nested") + 1])
+        return 2.0 ** (-base / 2 - level)
+    return H[args[0]](level)
+
+
 def run_level(python, args, level, timeout):
     start = time.perf_counter()
     try:
@@ -142,7 +162,7 @@ def run_level(python, args, level, timeout):
     if proc.returncode != 0:
         return {"level": level, "failed": proc.stderr[-300:]}
     record = json.loads(proc.stdout.strip().splitlines()[-1])
-    record.update({"level": level, "h": H[args[0]](level), "wall": wall})
+    record.update({"level": level, "h": h_of(args, level), "wall": wall})
     return record
 
 
