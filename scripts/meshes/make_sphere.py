@@ -9,17 +9,19 @@ script, and prints the size of the mesh it wrote: nodes, tetrahedra, the
 displacement unknowns (3 per node), the triangles of the contact cap and the
 contact unknowns they give with 8 triangles per contact element (3 per
 element; dpana merges the small groups its grouping of an unstructured
-surface leaves into their neighbours, so that there are somewhat fewer). `--level L` sets SizeFactor = 2^(-L/2), so that each level has
-about 2^(3/2) = 2.8 times the unknowns of the one before (level 0: the
-sizes of sphere.geo); each level is a new unstructured mesh. `--refine K`
-instead splits every tetrahedron of the level's mesh into 8, K times, with
-the new boundary nodes on the sphere (gmsh's RefineMesh): meshes nested in
-the level's mesh, h halved and about 7 times the unknowns per refinement,
-for convergence studies that need one mesh family. `--set` passes any parameter of sphere.geo (R, Side,
-CapRadius, PoleRadius, SizeContact, SizeFar, Growth, SizeFactor,
-Algorithm3D). An
-existing OUT.msh made with the same parameters is kept (the parameters are
-stored next to it in OUT.msh.args).
+surface leaves into their neighbours, so that there are somewhat fewer).
+
+`--level L` sets SizeFactor = 2^(-L/2), so that each level has about
+2^(3/2) = 2.8 times the unknowns of the one before (level 0: the sizes of
+sphere.geo); each level is a new unstructured mesh. `--refine K` instead
+splits every tetrahedron of the level's mesh into 8, K times, with the new
+boundary nodes on the sphere (gmsh's RefineMesh): meshes nested in the
+level's mesh, h halved and about 7 times the unknowns per refinement, for
+convergence studies that need one mesh family. `--set` passes any
+parameter of sphere.geo (R, Side, CapRadius, PoleRadius, SizeContact,
+SizeFar, Growth, SizeFactor, Algorithm3D). An existing OUT.msh made with
+the same parameters is kept (the parameters are stored next to it in
+OUT.msh.args).
 """
 import argparse
 import sys

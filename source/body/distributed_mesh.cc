@@ -48,28 +48,24 @@ namespace dpana
       unsigned int n_vertices = 0;
       // The point of every serial vertex.
       std::vector<dealii::Point<dim>> points;
-      // The constraints: constrained dof, its entries, inhomogeneity.
-      std::vector<unsigned int>                                 line_index;
-      std::vector<std::vector<std::pair<unsigned int, double>>> line_entries;
-      std::vector<double> line_inhomogeneity;
+      // The constraints, in serial dofs.
+      std::vector<dealii::AffineConstraints<double>::ConstraintLine>
+        constraint_lines;
       // The conditions at every supported serial vertex.
       std::map<unsigned int,
                std::vector<std::pair<std::string, dealii::Tensor<1, dim>>>>
         support_directions;
-      // The concentrated forces: requested point, vertex, force, and the
-      // serial vertex.
-      std::vector<dealii::Point<dim>>     requested_points, force_vertices;
-      std::vector<dealii::Tensor<1, dim>> forces;
-      std::vector<unsigned int>           force_serial_vertices;
-      std::vector<std::string>            warnings;
+      // The concentrated forces, and the serial vertex of each.
+      std::vector<typename Body<dim>::AppliedConcentratedForce> concentrated;
+      std::vector<unsigned int> force_serial_vertices;
+      std::vector<std::string>  warnings;
 
       template <class Archive>
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &error &n_cells &n_vertices &points &line_index &line_entries
-          &line_inhomogeneity &support_directions &requested_points
-            &force_vertices &forces &force_serial_vertices &warnings;
+        archive &error &n_cells &n_vertices &points &constraint_lines
+          &support_directions &concentrated &force_serial_vertices &warnings;
       }
     };
   } // namespace internal
@@ -338,23 +334,13 @@ namespace dpana
                        "); a distributed mesh finds its vertices by their "
                        "points (use Contact / Parallel mesh = whole)";
         }
-    for (const auto &line : constraints_.get_lines())
-      {
-        data.line_index.push_back(line.index);
-        data.line_entries.emplace_back(line.entries.begin(),
-                                       line.entries.end());
-        data.line_inhomogeneity.push_back(line.inhomogeneity);
-      }
+    const auto &lines = constraints_.get_lines();
+    data.constraint_lines.assign(lines.begin(), lines.end());
     for (const auto &[v, directions] : support_directions)
       data.support_directions[serial_vertex[v]] = directions;
-    for (unsigned int k = 0; k < concentrated.size(); ++k)
-      {
-        data.requested_points.push_back(concentrated[k].requested_point);
-        data.force_vertices.push_back(concentrated[k].vertex);
-        data.forces.push_back(concentrated[k].force);
-        data.force_serial_vertices.push_back(
-          serial_vertex[concentrated_vertex[k]]);
-      }
+    data.concentrated = concentrated;
+    for (const unsigned int v : concentrated_vertex)
+      data.force_serial_vertices.push_back(serial_vertex[v]);
     data.warnings   = warnings_;
     data.n_cells    = tria.n_active_cells();
     data.n_vertices = tria.n_used_vertices();
@@ -423,25 +409,19 @@ namespace dpana
       dof_of_serial[serial_index[i]] = i;
 
     constraints_.clear();
-    for (unsigned int k = 0; k < data.line_index.size(); ++k)
+    for (const auto &line : data.constraint_lines)
       {
-        const auto i = dof_of_serial[data.line_index[k]];
+        const auto i = dof_of_serial[line.index];
         constraints_.add_line(i);
-        for (const auto &[j, a] : data.line_entries[k])
+        for (const auto &[j, a] : line.entries)
           constraints_.add_entry(i, dof_of_serial[j], a);
-        constraints_.set_inhomogeneity(i, data.line_inhomogeneity[k]);
+        constraints_.set_inhomogeneity(i, line.inhomogeneity);
       }
     constraints_.close();
-    support_directions = data.support_directions;
-    concentrated.clear();
-    concentrated_vertex.clear();
-    for (unsigned int k = 0; k < data.forces.size(); ++k)
-      {
-        concentrated.push_back(
-          {data.requested_points[k], data.force_vertices[k], data.forces[k]});
-        concentrated_vertex.push_back(data.force_serial_vertices[k]);
-      }
-    warnings_ = data.warnings;
+    support_directions  = data.support_directions;
+    concentrated        = data.concentrated;
+    concentrated_vertex = data.force_serial_vertices;
+    warnings_           = data.warnings;
 
     rigid_modes =
       RigidModes<dim>(data.points, dofs_of_vertex, dof_handler_.n_dofs());

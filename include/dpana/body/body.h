@@ -109,6 +109,14 @@ namespace dpana
       dealii::Point<dim>     requested_point;
       dealii::Point<dim>     vertex;
       dealii::Tensor<1, dim> force;
+
+      /// Sent from rank 0 to the other ranks with the whole mesh's data.
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &requested_point &vertex &force;
+      }
     };
 
     /**
