@@ -3,7 +3,11 @@
 
 1. The extrapolation itself: richardson.py recovers q* and p from exact
    sequences q = q* + C h^p, with constant and with varying ratios of h,
-   and says "not asymptotic" for an oscillating one.
+   and says "not asymptotic" for an oscillating one; the equal-error
+   ratios of analyse.py on two such sequences whose limits lie 1 % apart
+   (the same relative errors, ten times the time): against the common
+   value every tolerance is "not resolved", each against its own limit
+   the ratio is 0.1, and a tolerance the finest level misses gives none.
 2. Three coarse levels of the hertz_rigid_mu0_d_shaped family (the
    D-shaped body of prm/hertz_rigid_mu0_d_shaped.prm, 5 contact
    refinements and 0, 1, 2 global
@@ -48,6 +52,7 @@
 import argparse
 import sys
 
+import analyse
 import families
 import richardson
 from sweep import run_level
@@ -69,6 +74,24 @@ def check_richardson(fail):
     r = richardson.extrapolate([1, 0.5, 0.25], [1.0, 2.0, 1.5])
     if r["asymptotic"] or r["order"] is not None:
         fail(f"richardson: oscillating sequence taken as asymptotic: {r}")
+
+
+def check_equal_error(fail):
+    h = [1.0, 0.5, 0.25, 0.125]
+    levels = [{"h": x, "dofs": 1, "solve_time": 10.0 * 4 ** k,
+               "q": 1.0 + 0.08 * x ** 2} for k, x in enumerate(h)]
+    peer = [{**r, "solve_time": 10 * r["solve_time"], "q": 1.01 * r["q"]}
+            for r in levels]
+    sd, sg = (analyse.study({"ok": r}, "q", None) for r in (levels, peer))
+    common = analyse.equal_error_ratios(sd, sg)
+    if set(common.values()) != {"not resolved"}:
+        fail(f"equal error: limits 1 % apart resolved at {common}")
+    own = analyse.own_limit_ratios(sd, sg)
+    expected = {0.01: 0.1, 0.005: 0.1, 0.002: 0.1, 0.001: None}
+    if any((own[t] is None) != (v is None) or
+           (v is not None and abs(own[t] - v) > 1e-9)
+           for t, v in expected.items()):
+        fail(f"equal error: own-limit ratios {own}, expected {expected}")
 
 
 def check_a_m(dpana, prm_dir, family, levels, load, a_ref, bound, label,
@@ -127,6 +150,7 @@ def main():
         failures.append(message)
 
     check_richardson(fail)
+    check_equal_error(fail)
     check_hertz(args.dpana, args.prm_dir, fail)
     check_sphere_nested(args.dpana, args.prm_dir, fail)
     print("check_quick: " + ("FAILED" if failures else "passed"))
