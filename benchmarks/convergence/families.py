@@ -332,6 +332,20 @@ FAMILIES.append(Family(
     exact={"resultant": 75000.0},
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN, on nested "
          "meshes (make_sphere.py --level -2 --refine k)"))
+# The sphere's second nested family, one level coarser: level -3 split k
+# times (1 320 to 420 543 dofs). Its finest level is the one on which
+# GetFEM still fits this machine (about 12 GB), so that both codes have
+# four nested levels.
+FAMILIES.append(Family(
+    "hertz_sphere_rigid_nested3", "hertz_sphere_rigid.prm", 3,
+    nested_sphere(range(0, 3), base=-3),
+    # 420 543 dofs: the blocked solves need 8.5 GB.
+    nested_sphere([3], entries=[("Contact/Condensation method",
+                                 "blocked solves")], base=-3),
+    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
+    exact={"resultant": 75000.0},
+    note="Quarter sphere R = 40 on a rigid plane, P = 300 kN, on nested "
+         "meshes (make_sphere.py --level -3 --refine k)"))
 
 # The two equal spheres: the upper one on dpana's sphere mesh, the lower one
 # (the mirror image) on the mesh of the scene's mesh line

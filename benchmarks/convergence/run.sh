@@ -81,7 +81,8 @@ peer_all=(hertz_rigid_mu0 hertz_rigid_mu0_r10 hertz_rigid_mu0_graded
   hertz_ratio_1e3_mu0_graded_block hertz_ratio_1_mu1_graded_block
   hertz_ratio_1e3_mu1_graded_block hertz_ratio_1e-3_mu0_graded_block
   hertz_ratio_1e-3_mu1_graded_block hertz_cavity_mu1_graded receding_3d_L80
-  hertz_sphere_rigid hertz_sphere_rigid_nested hertz_rigid_mu1
+  hertz_sphere_rigid hertz_sphere_rigid_nested hertz_sphere_rigid_nested3
+  hertz_rigid_mu1
   hertz_ratio_1_mu1 hertz_ratio_1e-3_mu1 hertz_ratio_1e3_mu1 hertz_cavity_mu0
   hertz_cavity_mu0_graded hertz_cavity_mu1
   hertz_two_spheres hertz_two_spheres_mu03 hertz_two_spheres_nested)

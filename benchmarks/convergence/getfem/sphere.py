@@ -21,7 +21,7 @@ symmetry conditions, the cap `contact` (3, r <= 6 mm) the candidate nodes.
             1/R* = 2/R and 1/E* = 2 (1 - nu^2)/E: the same a and p0.
   --mu MU   Coulomb friction MU (hertz_two_spheres_mu03.prm: 0.3).
   --nested BASE
-            the nested meshes of the families hertz_sphere_rigid_nested
+            the nested meshes of the families hertz_sphere_rigid_nested[3]
             and hertz_two_spheres_nested: --level k is the mesh of
             make_sphere.py --level BASE --refine k (with --two, the lower
             sphere's too).

@@ -45,6 +45,9 @@ families.py):
   hertz_sphere_rigid_nested sphere.py --nested -2 (the same on the nested
                             meshes: level k = make_sphere.py --level -2
                             --refine k)
+  hertz_sphere_rigid_nested3
+                            sphere.py --nested -3 (level -3 split k times;
+                            k = 3, 420 543 dofs, with --full)
   hertz_two_spheres, hertz_two_spheres_mu03
                             sphere.py --two [--mu 0.3] (two equal spheres)
   hertz_two_spheres_nested  sphere.py --two --nested -2 (the same on nested
@@ -117,6 +120,10 @@ FAMILIES = {
     # 3D factor of 7.5 times the unknowns grows about 15 times.
     "hertz_sphere_rigid_nested": (["sphere.py", "--nested", "-2"],
                                   range(0, 3), []),
+    # Level 3 of the coarser nested family (420 543 dofs) fits (about
+    # 12 GB): four GetFEM levels.
+    "hertz_sphere_rigid_nested3": (["sphere.py", "--nested", "-3"],
+                                   range(0, 3), [3]),
     "hertz_two_spheres": (["sphere.py", "--two"], range(0, 3), [3]),
     "hertz_two_spheres_nested": (["sphere.py", "--two", "--nested", "-2"],
                                  range(0, 3), []),
