@@ -334,7 +334,7 @@ FAMILIES.append(Family(
          "meshes (make_sphere.py --level -2 --refine k)"))
 # The sphere's second nested family, one level coarser: level -3 split k
 # times (1 320 to 420 543 dofs). Its finest level is the one on which
-# GetFEM still fits this machine (about 12 GB), so that both codes have
+# GetFEM still fits this machine (about 11 GB), so that both codes have
 # four nested levels.
 FAMILIES.append(Family(
     "hertz_sphere_rigid_nested3", "hertz_sphere_rigid.prm", 3,

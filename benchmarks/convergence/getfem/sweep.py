@@ -121,7 +121,7 @@ FAMILIES = {
     "hertz_sphere_rigid_nested": (["sphere.py", "--nested", "-2"],
                                   range(0, 3), []),
     # Level 3 of the coarser nested family (420 543 dofs) fits (about
-    # 12 GB): four GetFEM levels.
+    # 11 GB): four GetFEM levels.
     "hertz_sphere_rigid_nested3": (["sphere.py", "--nested", "-3"],
                                    range(0, 3), [3]),
     "hertz_two_spheres": (["sphere.py", "--two"], range(0, 3), [3]),
