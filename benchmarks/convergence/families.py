@@ -311,11 +311,14 @@ for mu in ("mu0", "mu1"):
         exact={"resultant": 100000.0}, hertz=True,
         note="Circular body in a cavity R = 120, both on graded gmsh meshes"
              + FRICTION[mu]))
+# The quantities of every sphere family; the contact carries the quarter
+# sphere's P/4 = 75 kN exactly.
+SPHERE_Q = {"quantities": ("N_max", "a_m", "resultant"),
+            "plot": ("N_max", "a_m"), "exact": {"resultant": 75000.0}}
 FAMILIES.append(Family(
     "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
     sphere(range(0, 5)), sphere([5]),
-    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
-    exact={"resultant": 75000.0},
+    **SPHERE_Q,
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN (3D Hertz: "
          "a = 4.050 mm, p0 = 8730 MPa)"))
 # The same sphere on nested meshes: the level-(-2) mesh split k times. The
@@ -328,8 +331,7 @@ FAMILIES.append(Family(
     # 641 547 dofs: the blocked solves need 14 GB, the Schur route more.
     nested_sphere([3], entries=[("Contact/Condensation method",
                                  "blocked solves")]),
-    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
-    exact={"resultant": 75000.0},
+    **SPHERE_Q,
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN, on nested "
          "meshes (make_sphere.py --level -2 --refine k)"))
 # The sphere's second nested family, one level coarser: level -3 split k
@@ -342,8 +344,7 @@ FAMILIES.append(Family(
     # 420 543 dofs: the blocked solves need 8.5 GB.
     nested_sphere([3], entries=[("Contact/Condensation method",
                                  "blocked solves")], base=-3),
-    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
-    exact={"resultant": 75000.0},
+    **SPHERE_Q,
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN, on nested "
          "meshes (make_sphere.py --level -3 --refine k)"))
 
@@ -357,8 +358,7 @@ for name, mu in (("hertz_two_spheres", "frictionless"),
         name, f"{name}.prm", 3,
         sphere(range(0, 5), (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
         sphere([5], (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
-        quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
-        exact={"resultant": 75000.0},
+        **SPHERE_Q,
         note=f"Two equal spheres R = 40, P = 300 kN, {mu} (3D Hertz as "
              "for one sphere on a rigid plane: a = 4.050 mm, "
              "p0 = 8730 MPa)"))
@@ -368,8 +368,7 @@ for name, mu in (("hertz_two_spheres", "frictionless"),
 FAMILIES.append(Family(
     "hertz_two_spheres_nested", "hertz_two_spheres.prm", 3,
     nested_sphere(range(0, 3), (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
-    quantities=("N_max", "a_m", "resultant"), plot=("N_max", "a_m"),
-    exact={"resultant": 75000.0},
+    **SPHERE_Q,
     note="Two equal spheres R = 40, P = 300 kN, frictionless, on nested "
          "meshes (make_sphere.py --level -2 --refine k)"))
 
