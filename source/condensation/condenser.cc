@@ -321,7 +321,17 @@ namespace dpana
     Condenser<dim>::check_memory_limit() const
     {
       const double limit = memory_limit(parameters.memory_limit_gb);
-      if (estimate.total() <= limit)
+      if (reservations != nullptr)
+        switch (reservations->request(estimate, limit))
+          {
+            case MemoryReservations::Decision::granted:
+              return;
+            case MemoryReservations::Decision::deferred:
+              throw Deferred();
+            case MemoryReservations::Decision::refused:
+              break;
+          }
+      else if (estimate.total() <= limit)
         return;
       std::ostringstream message;
       message << body.name() << ": the condensation would need "

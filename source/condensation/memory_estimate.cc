@@ -80,5 +80,20 @@ namespace dpana
           return resident_memory() + value * 1024.0;
       return std::numeric_limits<double>::infinity();
     }
+
+
+
+    MemoryReservations::Decision
+    MemoryReservations::request(const MemoryEstimate &estimate,
+                                const double          limit)
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (estimate.total() + granted <= limit)
+        {
+          granted += estimate.factor + estimate.dense;
+          return Decision::granted;
+        }
+      return granted > 0 ? Decision::deferred : Decision::refused;
+    }
   } // namespace condensation
 } // namespace dpana

@@ -114,6 +114,18 @@ namespace dpana
         "mesh for the set-up and releases it; doc/parallel.md); 'whole' "
         "every rank keeps the whole mesh. The replicated assembly keeps the "
         "whole mesh. One process ignores it.");
+      prm.declare_entry(
+        "Concurrent bodies",
+        "true",
+        dealii::Patterns::Bool(),
+        "With two bodies, on the serial route with Factorisation back end = "
+        "cholmod: 'true' factorises and condenses the bodies at the same "
+        "time, one thread each, the BLAS on one thread per body meanwhile "
+        "(the same compliance and load term up to round-off; a body whose "
+        "memory check fails only because of the other's is factorised after "
+        "it); 'false' one body after the other, the BLAS on every core. "
+        "The MPI route and the MUMPS back end take the bodies one after the "
+        "other.");
     }
 
 
@@ -171,6 +183,9 @@ namespace dpana
                              prm.get("Parallel assembly") == "distributed";
       distributed_mesh =
         distributed_assembly && prm.get("Parallel mesh") == "distributed";
+      concurrent_bodies = prm.get_bool("Concurrent bodies") &&
+                          route == parallel::Route::serial &&
+                          backend == Backend::cholmod;
       if (backend == Backend::mumps)
         parallel::check_mumps_available();
       out_of_core_directory = prm.get("Out-of-core directory");

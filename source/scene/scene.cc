@@ -157,29 +157,33 @@ namespace dpana
     void
     Scene<dim>::assemble()
     {
-      for (auto &body : bodies)
-        {
-          const auto phase =
-            phase_log.phase("assembly", "assembling " + body->name());
-          phase_log.add("assembly", body->mesh_reading_time());
-          // The distributed assembly of the MPI route: the cells split over
-          // the ranks (a body needs at least one cell per rank); with a
-          // distributed mesh only rank 0 builds the whole mesh.
-          const bool distributed =
-            with_contact && condensation_parameters.distributed_assembly;
-          if (distributed)
-            body->partition(MPI_COMM_WORLD,
-                            condensation_parameters.distributed_mesh);
-          body->create_mesh();
-          if (distributed)
-            parallel::check_ranks(body->name(),
-                                  body->n_cells(),
-                                  parallel::n_world_ranks());
-          body->setup();
-          if (!with_contact)
-            body->check_held();
-          body->assemble();
-        }
+      const bool distributed =
+        with_contact && condensation_parameters.distributed_assembly;
+      if (with_contact && condensation_parameters.concurrent_bodies &&
+          bodies.size() > 1 && !distributed)
+        assemble_concurrently();
+      else
+        for (auto &body : bodies)
+          {
+            const auto phase =
+              phase_log.phase("assembly", "assembling " + body->name());
+            phase_log.add("assembly", body->mesh_reading_time());
+            // The distributed assembly of the MPI route: the cells split over
+            // the ranks (a body needs at least one cell per rank); with a
+            // distributed mesh only rank 0 builds the whole mesh.
+            if (distributed)
+              body->partition(MPI_COMM_WORLD,
+                              condensation_parameters.distributed_mesh);
+            body->create_mesh();
+            if (distributed)
+              parallel::check_ranks(body->name(),
+                                    body->n_cells(),
+                                    parallel::n_world_ranks());
+            body->setup();
+            if (!with_contact)
+              body->check_held();
+            body->assemble();
+          }
       if (!quiet)
         print_bodies();
       // On several ranks, the peak memory of every rank so far and the
@@ -292,31 +296,31 @@ namespace dpana
     {
       condensers.clear();
       for (unsigned int b = 0; b < bodies.size(); ++b)
+        condensers.push_back(std::make_unique<condensation::Condenser<dim>>(
+          *bodies[b], *surfaces[b], condensation_parameters));
+      if (condensation_parameters.concurrent_bodies && bodies.size() > 1)
         {
-          condensers.push_back(std::make_unique<condensation::Condenser<dim>>(
-            *bodies[b], *surfaces[b], condensation_parameters));
-          {
-            const auto phase =
-              phase_log.phase("factorization",
-                              "factorising " + bodies[b]->name());
-            condensers[b]->factorize();
-          }
-          if (!quiet)
-            std::cout << "        Memory estimate of " << bodies[b]->name()
-                      << ": " << condensers[b]->memory_estimate().describe()
-                      << std::endl;
-          const auto *mumps =
-            dynamic_cast<const linear_algebra::MumpsSchurFactorization *>(
-              &condensers[b]->schur_factorization());
-          if (!quiet && mumps != nullptr)
-            std::cout << "        MUMPS on " << mumps->n_ranks()
-                      << " rank(s): " << mumps->statistics().describe()
-                      << std::endl;
-          const auto phase =
-            phase_log.phase("condensation", "condensing " + bodies[b]->name());
-          condensers[b]->assemble_coupling();
-          condensers[b]->condense(condensation_parameters.columns_per_solve);
+          factorize_concurrently();
+          for (unsigned int b = 0; b < bodies.size(); ++b)
+            print_factorization(b);
+          condense_concurrently();
         }
+      else
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          {
+            {
+              const auto phase =
+                phase_log.phase("factorization",
+                                "factorising " + bodies[b]->name());
+              condensers[b]->factorize();
+            }
+            print_factorization(b);
+            const auto phase =
+              phase_log.phase("condensation",
+                              "condensing " + bodies[b]->name());
+            condensers[b]->assemble_coupling();
+            condensers[b]->condense(condensation_parameters.columns_per_solve);
+          }
       std::vector<const condensation::Condenser<dim> *> parts;
       for (const auto &c : condensers)
         parts.push_back(c.get());
@@ -333,6 +337,27 @@ namespace dpana
         std::cout << " " << c->fictitious_supports().size();
       std::cout << "), relative asymmetry of A before symmetrisation "
                 << summary_.asymmetry << std::endl;
+    }
+
+
+
+    // The memory estimate of body b's factorisation and, for MUMPS, its
+    // statistics.
+    template <int dim>
+    void
+    Scene<dim>::print_factorization(const unsigned int b) const
+    {
+      if (quiet)
+        return;
+      std::cout << "        Memory estimate of " << bodies[b]->name() << ": "
+                << condensers[b]->memory_estimate().describe() << std::endl;
+      const auto *mumps =
+        dynamic_cast<const linear_algebra::MumpsSchurFactorization *>(
+          &condensers[b]->schur_factorization());
+      if (mumps != nullptr)
+        std::cout << "        MUMPS on " << mumps->n_ranks()
+                  << " rank(s): " << mumps->statistics().describe()
+                  << std::endl;
     }
 
 

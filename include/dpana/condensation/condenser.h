@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -107,6 +108,23 @@ namespace dpana
      * columns per blocked solve is a parameter of the run
      * (condensation::Parameters, parameters.h).
      */
+    /**
+     * Thrown by Condenser::factorize() when its memory check fails only
+     * because of the memory granted to condensations running at the same
+     * time (MemoryReservations): the body is to be factorised again after
+     * them, by a new Condenser.
+     */
+    struct Deferred : std::exception
+    {
+      const char *
+      what() const noexcept override
+      {
+        return "condensation deferred until the others are done (memory)";
+      }
+    };
+
+
+
     template <int dim>
     class Condenser
     {
@@ -128,6 +146,18 @@ namespace dpana
        */
       void
       factorize();
+
+      /**
+       * The grants of the condensations running at the same time as this
+       * one (MemoryReservations), which the memory check of factorize()
+       * adds to its estimate; nullptr (the default): none. A check that
+       * fails only because of them throws Deferred.
+       */
+      void
+      set_memory_reservations(MemoryReservations *grants)
+      {
+        reservations = grants;
+      }
 
       /**
        * A, s_o, G, e. By the Method of the parameters: through the factor of
@@ -260,7 +290,9 @@ namespace dpana
       make_mumps_back_end();
 
       /**
-       * Throw an InputError if #estimate exceeds the memory limit.
+       * Throw an InputError if #estimate exceeds the memory limit, with
+       * #reservations the grants of the others added (Deferred if they
+       * alone make it exceed).
        */
       void
       check_memory_limit() const;
@@ -295,12 +327,13 @@ namespace dpana
       // adapter of #cholesky, or MUMPS.
       std::unique_ptr<linear_algebra::SchurFactorization> back_end;
 
-      Eigen::MatrixXd A;
-      Eigen::VectorXd s_o;
-      Eigen::MatrixXd G;
-      Eigen::VectorXd e;
-      double          relative_asymmetry = 0;
-      MemoryEstimate  estimate;
+      Eigen::MatrixXd     A;
+      Eigen::VectorXd     s_o;
+      Eigen::MatrixXd     G;
+      Eigen::VectorXd     e;
+      double              relative_asymmetry = 0;
+      MemoryEstimate      estimate;
+      MemoryReservations *reservations = nullptr;
     };
   } // namespace condensation
 } // namespace dpana

@@ -6,6 +6,7 @@
 
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
+#include <mutex>
 #include <string>
 
 namespace dpana
@@ -92,6 +93,43 @@ namespace dpana
      */
     double
     memory_limit(const double limit_gb);
+
+    /**
+     * The memory granted to condensations that run at the same time (the
+     * bodies of a scene factorised concurrently, scene::Scene::condense()).
+     * One after the other, each body's check (Condenser::factorize()) would
+     * find the factor and dense blocks of the bodies before it in use; at
+     * the same time it finds them only in part, so each check adds what the
+     * others have been granted (their factor and dense blocks in full: what
+     * they have allocated already is counted twice, on the safe side).
+     *
+     * A check that fails only because of the others' grants is deferred:
+     * the body is factorised after them, with the check of a run one body
+     * after the other. One that fails with no grant outstanding is refused
+     * as it would be then.
+     */
+    class MemoryReservations
+    {
+    public:
+      enum class Decision
+      {
+        granted,
+        deferred,
+        refused
+      };
+
+      /**
+       * Whether @p estimate, with the grants made so far, fits in
+       * @p limit (bytes); if it does, its factor and dense blocks are
+       * granted.
+       */
+      Decision
+      request(const MemoryEstimate &estimate, const double limit);
+
+    private:
+      std::mutex mutex;
+      double     granted = 0;
+    };
   } // namespace condensation
 } // namespace dpana
 

@@ -58,6 +58,7 @@ namespace dpana
      *       set Parallel route         = auto
      *       set Parallel assembly      = distributed
      *       set Parallel mesh          = distributed
+     *       set Concurrent bodies      = true
      *     end
      *
      * declared by declare_parameters() and read by parse_parameters() in
@@ -109,6 +110,13 @@ namespace dpana
        * #distributed_assembly.
        */
       bool distributed_mesh = false;
+      /**
+       * Whether the bodies of a two-body scene are factorised and condensed
+       * at the same time, one thread each (`Concurrent bodies = true`, the
+       * default of a parameter file; scene::Scene::condense()): only on the
+       * serial route with Backend::cholmod.
+       */
+      bool concurrent_bodies = false;
       /**
        * Where MUMPS writes its factor (out of core, MUMPS' ICNTL(22) = 1);
        * empty: in memory. Only with Backend::mumps (an InputError with

@@ -44,7 +44,9 @@ namespace dpana
      *    or the rigid plane, and the initial gaps;
      * 3. condense(): one factorisation per body, the compliance A = V^T K^-1
      *    V and the load term on Γc, the equilibrium rows of the floating
-     *    bodies, and the condensed contact problem (A, D, mu, G, e);
+     *    bodies, and the condensed contact problem (A, D, mu, G, e); two
+     *    bodies are assembled, factorised and condensed at the same time,
+     *    one thread each (Contact / Concurrent bodies, concurrent_bodies.cc);
      * 4. solve(): the contact problem by the chosen solver (without contact:
      *    K u = f for every body);
      * 5. recover(): u = K^-1 (f + V r) and the stresses of every body, the
@@ -213,6 +215,18 @@ namespace dpana
       write_summary(const std::string &directory) const;
       void
       print_bodies() const;
+      void
+      print_factorization(const unsigned int b) const;
+      // The bodies assembled, factorised, then condensed, at the same time
+      // (concurrent_bodies.cc).
+      void
+      assemble_concurrently();
+      void
+      factorize_concurrently();
+      void
+      condense_concurrently();
+      std::string
+      body_names() const;
       void
       print_body_results() const;
     };

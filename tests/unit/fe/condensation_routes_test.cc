@@ -173,9 +173,9 @@ namespace
   }
 
   // A 3D block floating along the contact direction (symmetry planes only),
-  // alone or on a held 3D foundation.
-  std::unique_ptr<scene::Scene<3>>
-  block_3d(const bool with_foundation)
+  // alone or on a held 3D foundation: the parameter file.
+  std::string
+  block_3d_text(const bool with_foundation)
   {
     using dpana::test::brick_body;
     const std::string block =
@@ -190,7 +190,7 @@ namespace
                                 "  set Boundary 1 = bottom\n"
                                 "  set Contact direction = 0, -1, 0\n";
     if (!with_foundation)
-      return make_scene<3>("set Dimension = 3\n" + block + contact + "end\n");
+      return "set Dimension = 3\n" + block + contact + "end\n";
     const std::string foundation =
       brick_body("Body 2",
                  "box",
@@ -199,10 +199,81 @@ namespace
                  "8, 4, 4",
                  "    set Symmetry = left, front\n    set Fixed = bottom: y\n",
                  "");
-    return make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" +
-                           block + foundation + contact +
-                           "  set Boundary 2 = top\nend\n",
-                         2);
+    return "set Dimension = 3\nset Number of bodies = 2\n" + block +
+           foundation + contact + "  set Boundary 2 = top\nend\n";
+  }
+
+  std::unique_ptr<scene::Scene<3>>
+  block_3d(const bool with_foundation)
+  {
+    return make_scene<3>(block_3d_text(with_foundation),
+                         with_foundation ? 2 : 1);
+  }
+
+
+
+  // The two bodies of the scene of @p text condensed at the same time
+  // (Contact / Concurrent bodies = true, the default: each on a thread of
+  // its own, the BLAS on that thread) and one after the other (false: the
+  // BLAS on every core) give the same contact problem up to round-off
+  // (1e-12 relative) and the same tractions (1e-10 relative), in the same
+  // phases.
+  template <int dim>
+  void
+  expect_concurrent_equals_one_after_the_other(const std::string &text)
+  {
+    auto concurrent = make_scene<dim>(text, 2);
+    auto serial     = make_scene<dim>(text + "subsection Contact\n"
+                                             "  set Concurrent bodies = false\n"
+                                             "end\n",
+                                  2);
+    // The progress lines say which way each ran.
+    std::vector<std::string> logs;
+    for (auto *s : {concurrent.get(), serial.get()})
+      {
+        s->set_quiet(false);
+        testing::internal::CaptureStdout();
+        s->assemble();
+        s->build_contact_surface();
+        s->condense();
+        s->solve();
+        logs.push_back(testing::internal::GetCapturedStdout());
+        ASSERT_TRUE(s->summary().result.converged);
+      }
+    for (const std::string phase : {"assembling", "factorising", "condensing"})
+      {
+        EXPECT_NE(logs[0].find(phase + " Body 1 and Body 2 concurrently"),
+                  std::string::npos)
+          << logs[0];
+        EXPECT_NE(logs[1].find(phase + " Body 2 ..."), std::string::npos)
+          << logs[1];
+        EXPECT_EQ(logs[1].find("concurrently"), std::string::npos) << logs[1];
+      }
+    const auto relative = [](const auto &x, const auto &y) {
+      return (x - y).norm() / y.norm();
+    };
+    const auto &p = concurrent->problem(), &q = serial->problem();
+    EXPECT_LT(relative(p.A, q.A), 1e-12);
+    EXPECT_LT(relative(p.D, q.D), 1e-12);
+    EXPECT_EQ(p.G.rows(), q.G.rows());
+    if (q.G.rows() > 0)
+      {
+        EXPECT_LT(relative(p.G, q.G), 1e-12);
+        EXPECT_LT(relative(p.e, q.e), 1e-12);
+      }
+    EXPECT_LT(relative(concurrent->summary().result.r,
+                       serial->summary().result.r),
+              1e-10);
+    for (unsigned int b = 0; b < 2; ++b)
+      EXPECT_EQ(concurrent->condenser(b).fictitious_supports(),
+                serial->condenser(b).fictitious_supports());
+    const auto phases = [](const auto &s) {
+      std::vector<std::string> names;
+      for (const auto &[name, t] : s->phases().timings())
+        names.push_back(name);
+      return names;
+    };
+    EXPECT_EQ(phases(concurrent), phases(serial));
   }
 } // namespace
 
@@ -229,6 +300,36 @@ TEST(Condensation, SchurRouteEqualsBlockedSolves3D)
   expect_routes_agree(*two);
   EXPECT_EQ(condensed(*two, 0, Method::schur)->n_free_modes(), 1u);
   EXPECT_EQ(condensed(*two, 1, Method::schur)->n_free_modes(), 0u);
+}
+
+
+
+TEST(Condensation, ConcurrentBodiesEqualOneAfterTheOther)
+{
+  expect_concurrent_equals_one_after_the_other<2>(
+    hertz_prm(2, 15, 0.3, dpana::test::floating_foundation()));
+  expect_concurrent_equals_one_after_the_other<3>(block_3d_text(true));
+}
+
+
+
+// The memory check of bodies condensed at the same time: an estimate that
+// fits with the grants so far is granted (its factor and dense blocks); one
+// that fits alone but not with them is deferred; one that does not fit
+// alone, with no grant outstanding, is refused (bytes).
+TEST(Condensation, MemoryReservationsGrantDeferRefuse)
+{
+  condensation::MemoryEstimate m;
+  m.current      = 1;
+  m.factor       = 2;
+  m.dense        = 1;
+  using Decision = condensation::MemoryReservations::Decision;
+  condensation::MemoryReservations grants;
+  EXPECT_EQ(grants.request(m, 6), Decision::granted);  // 4 <= 6, 3 granted
+  EXPECT_EQ(grants.request(m, 6), Decision::deferred); // 4 + 3 > 6
+  EXPECT_EQ(grants.request(m, 7), Decision::granted);  // 4 + 3 <= 7
+  condensation::MemoryReservations none;
+  EXPECT_EQ(none.request(m, 3.5), Decision::refused); // 4 > 3.5 alone
 }
 
 
