@@ -119,8 +119,8 @@ namespace dpana
         "true",
         dealii::Patterns::Bool(),
         "With two bodies, on the serial route with Factorisation back end = "
-        "cholmod: 'true' factorises and condenses the bodies at the same "
-        "time, one thread each, the BLAS on one thread per body meanwhile "
+        "cholmod: 'true' assembles, factorises and condenses the bodies at the "
+        "same time, one thread each, the BLAS on one thread per body meanwhile "
         "(the same compliance and load term up to round-off; a body whose "
         "memory check fails only because of the other's is factorised after "
         "it); 'false' one body after the other, the BLAS on every core. "

@@ -116,6 +116,11 @@ namespace dpana
             {
               deferred[b] = 1;
             }
+          catch (...)
+            {
+              condensers[b]->set_memory_reservations(nullptr);
+              throw;
+            }
           condensers[b]->set_memory_reservations(nullptr);
         });
       }

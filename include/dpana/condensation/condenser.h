@@ -27,6 +27,23 @@ namespace dpana
   namespace condensation
   {
     /**
+     * Thrown by Condenser::factorize() when its memory check fails only
+     * because of the memory granted to condensations running at the same
+     * time (MemoryReservations): the body is to be factorised again after
+     * them, by a new Condenser.
+     */
+    struct Deferred : std::exception
+    {
+      const char *
+      what() const noexcept override
+      {
+        return "condensation deferred until the others are done (memory)";
+      }
+    };
+
+
+
+    /**
      * The condensation of one elastic body on its candidate contact surface
      * (the reference formulation, eqs. 4.1-4.9).
      *
@@ -108,23 +125,6 @@ namespace dpana
      * columns per blocked solve is a parameter of the run
      * (condensation::Parameters, parameters.h).
      */
-    /**
-     * Thrown by Condenser::factorize() when its memory check fails only
-     * because of the memory granted to condensations running at the same
-     * time (MemoryReservations): the body is to be factorised again after
-     * them, by a new Condenser.
-     */
-    struct Deferred : std::exception
-    {
-      const char *
-      what() const noexcept override
-      {
-        return "condensation deferred until the others are done (memory)";
-      }
-    };
-
-
-
     template <int dim>
     class Condenser
     {

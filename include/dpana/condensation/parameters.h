@@ -111,10 +111,10 @@ namespace dpana
        */
       bool distributed_mesh = false;
       /**
-       * Whether the bodies of a two-body scene are factorised and condensed
-       * at the same time, one thread each (`Concurrent bodies = true`, the
-       * default of a parameter file; scene::Scene::condense()): only on the
-       * serial route with Backend::cholmod.
+       * Whether the bodies of a two-body scene are assembled, factorised
+       * and condensed at the same time, one thread each (`Concurrent bodies =
+       * true`, the default of a parameter file; scene::Scene::condense()): only
+       * on the serial route with Backend::cholmod.
        */
       bool concurrent_bodies = false;
       /**

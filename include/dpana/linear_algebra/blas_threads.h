@@ -19,8 +19,8 @@ namespace dpana
      * two or more threads on each core, and OpenBLAS' idle threads wait by
      * spinning, which takes the cores from the callers: two bodies of
      * 35 000 and 39 000 dofs factorised at once took 1.0-1.1 s with
-     * OpenBLAS on two threads and 0.47 s on one, against 0.8-1.0 s one
-     * body after the other.
+     * OpenBLAS on two threads and 0.46-0.48 s on one, against 0.77-1.05 s
+     * one body after the other.
      *
      * The number is set through OpenBLAS' openblas_set_num_threads(), looked
      * up at run time; a BLAS without it (the reference BLAS runs on one
