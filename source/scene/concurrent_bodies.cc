@@ -131,8 +131,7 @@ namespace dpana
               phase_log.phase("factorization",
                               "factorising " + bodies[b]->name() +
                                 " after the others (its memory check)");
-            condensers[b] = std::make_unique<condensation::Condenser<dim>>(
-              *bodies[b], *surfaces[b], condensation_parameters);
+            condensers[b] = make_condenser(b);
             condensers[b]->factorize();
           }
     }

@@ -215,6 +215,8 @@ namespace dpana
       write_summary(const std::string &directory) const;
       void
       print_bodies() const;
+      std::unique_ptr<condensation::Condenser<dim>>
+      make_condenser(const unsigned int b) const;
       void
       print_factorization(const unsigned int b) const;
       // The bodies assembled, factorised, then condensed, at the same time
