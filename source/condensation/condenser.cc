@@ -387,6 +387,8 @@ namespace dpana
     Condenser<dim>::condense(const unsigned int columns_per_pass)
     {
       Assert(back_end != nullptr, dealii::ExcInternalError());
+      if (V.rows() == 0)
+        assemble_coupling();
       if (parameters.method == Method::schur)
         condense_through_schur_complement();
       else

@@ -147,7 +147,6 @@ namespace dpana
                         "condensing " + body_names() + " concurrently");
       const linear_algebra::SingleThreadedBlas one_thread_per_body;
       for_each_at_once(bodies.size(), [this](const unsigned int b) {
-        condensers[b]->assemble_coupling();
         condensers[b]->condense(condensation_parameters.columns_per_solve);
       });
     }

@@ -47,7 +47,6 @@ namespace dpana
             const auto phase =
               phase_log.phase("condensation",
                               "condensing " + bodies[b]->name());
-            condensers[b]->assemble_coupling();
             condensers[b]->condense(condensation_parameters.columns_per_solve);
           }
       std::vector<const condensation::Condenser<dim> *> parts;

@@ -135,7 +135,8 @@ namespace dpana
 
       /**
        * Assemble V (sparse, n_dofs x dim n_elements). factorize() calls it
-       * itself if the Schur route needs V before.
+       * itself if the Schur route needs V before, condense() if V is not
+       * assembled yet.
        */
       void
       assemble_coupling();
