@@ -72,18 +72,20 @@ namespace dpana
 
 
 
-  // The mesh: the points and dofs of its used vertices that carry dofs.
+  // The mesh: the points and dofs of its used vertices that carry dofs
+  // (found once, for both).
   template <int dim>
   RigidModes<dim>::RigidModes(
     const dealii::Triangulation<dim> &tria,
     const std::vector<std::array<dealii::types::global_dof_index, dim>>
                                          &vertex_dofs,
     const dealii::types::global_dof_index n_dofs)
-    : RigidModes(
-        select(tria.get_vertices(), vertices_with_dofs<dim>(tria, vertex_dofs)),
-        select(vertex_dofs, vertices_with_dofs<dim>(tria, vertex_dofs)),
-        n_dofs)
   {
+    const std::vector<unsigned int> vertices =
+      vertices_with_dofs<dim>(tria, vertex_dofs);
+    *this = RigidModes(select(tria.get_vertices(), vertices),
+                       select(vertex_dofs, vertices),
+                       n_dofs);
   }
 
 
