@@ -4,7 +4,6 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/io/fclib.h>
-#include <dpana/linear_algebra/mumps_schur.h>
 #include <dpana/output/contact_output.h>
 #include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
