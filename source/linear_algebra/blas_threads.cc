@@ -50,5 +50,17 @@ namespace dpana
       if (previous > 0)
         set_threads()(previous);
     }
+
+
+
+    void
+    serial_openmp_regions()
+    {
+      using SetLevels              = void (*)(int);
+      static const auto set_levels = reinterpret_cast<SetLevels>(
+        dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+      if (set_levels != nullptr)
+        set_levels(0);
+    }
   } // namespace linear_algebra
 } // namespace dpana

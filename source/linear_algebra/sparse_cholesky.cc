@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
+#include <dpana/linear_algebra/blas_threads.h>
 #include <dpana/linear_algebra/schur_factorization.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
@@ -283,6 +284,8 @@ namespace dpana
       impl->analysis.matrix_entries = K_lower.nonZeros();
       if (impl->check)
         impl->check(impl->analysis);
+      // CHOLMOD's OpenMP loops on this thread (blas_threads.h).
+      serial_openmp_regions();
       impl->llt.factorize(K_lower);
       if (impl->llt.info() != Eigen::Success)
         throw_if_too_large(impl->llt.cholmod().status, K_lower.rows());

@@ -40,6 +40,29 @@ namespace dpana
       /// OpenBLAS' number of threads before; 0: not OpenBLAS.
       int previous = 0;
     };
+
+
+
+    /**
+     * Makes the OpenMP parallel regions that the calling thread reaches
+     * run on that thread alone (its OpenMP max-active-levels set to 0,
+     * through omp_set_max_active_levels() looked up at run time; a process
+     * without OpenMP is left as it is). The setting belongs to the thread:
+     * call it on each thread that factorises.
+     *
+     * Of dpana's libraries only CHOLMOD has such regions: short loops of
+     * its supernodal factorisation (clearing and filling each supernode)
+     * that it was compiled to run on 4 threads, whatever the machine and
+     * whatever OMP_NUM_THREADS says. The factorisation's parallel work is
+     * the BLAS'; on top of it the 4 OpenMP threads of each caller take the
+     * cores from the BLAS and, on a small matrix, cost more to start than
+     * the loops they run. On the 2-core machine of the benchmarks the
+     * factorisation of the graded disc (95 642 dofs) took 1.22 s (median of
+     * 6) with the loops on one thread against 1.45 s with 4, and that of
+     * the two blocks of 50 and 162 dofs 4-5 ms against 10 ms.
+     */
+    void
+    serial_openmp_regions();
   } // namespace linear_algebra
 } // namespace dpana
 
