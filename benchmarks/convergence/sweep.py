@@ -70,13 +70,14 @@ def run_level(dpana, family, prm_dir, level, h, edits, timeout):
 
 
 def sweep(dpana, family, prm_dir, full, timeout, repeat=1):
-    """The levels of family, each run repeat times, the fastest kept."""
+    """The levels of family, each run repeat times (a short one more:
+    records.fastest_of_runs), the fastest kept."""
     levels = family.levels + (family.full if full else [])
     records = []
     for i, (h, edits) in enumerate(levels):
-        records.append(records_io.fastest(
-            [run_level(dpana, family, prm_dir, i, h, edits, timeout)
-             for _ in range(repeat)]))
+        records.append(records_io.fastest_of_runs(
+            lambda: run_level(dpana, family, prm_dir, i, h, edits, timeout),
+            repeat))
         if not records_io.progress(records[-1]):
             break
     return records

@@ -180,14 +180,14 @@ TIMEOUTS = {"hertz_sphere_rigid_nested3": 3600}
 
 
 def run(python, family, full, timeout, repeat):
-    """The levels of family, each run repeat times, the fastest kept."""
+    """The levels of family, each run repeat times (a short one more:
+    records.fastest_of_runs), the fastest kept."""
     args, levels, extra = FAMILIES[family]
     timeout = max(timeout, TIMEOUTS.get(family, 0))
     records = []
     for level in list(levels) + (list(extra) if full else []):
-        records.append(records_io.fastest(
-            [run_level(python, args, level, timeout)
-             for _ in range(repeat)]))
+        records.append(records_io.fastest_of_runs(
+            lambda: run_level(python, args, level, timeout), repeat))
         if not records_io.progress(records[-1]):
             break
     return records

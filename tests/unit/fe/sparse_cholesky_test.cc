@@ -20,7 +20,10 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <filesystem>
+#include <iterator>
 #include <random>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -342,6 +345,33 @@ TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
       SCOPED_TRACE(to_string(ordering));
       check_last_block(ordering);
     }
+}
+
+
+
+// CHOLMOD was compiled to run loops of its supernodal factorisation on 4
+// OpenMP threads; dpana keeps them on the thread that factorises
+// (blas_threads.h). OpenMP keeps the threads it started for a thread alive
+// until that thread ends, so a factorisation on a new thread (whose OpenMP
+// settings are the defaults) must leave the number of the process' threads
+// as it found it. The matrix (1 600 unknowns) is large enough for CHOLMOD's
+// loops to ask for their threads (more than 128 columns).
+TEST(SparseCholesky, FactorisationStartsNoThread)
+{
+  const auto threads = [] {
+    return std::distance(std::filesystem::directory_iterator("/proc/self/task"),
+                         std::filesystem::directory_iterator{});
+  };
+  TestMatrix  A(40, 0.1);
+  long        before = 0, after = 0;
+  std::thread factorising([&] {
+    before = threads();
+    SparseCholesky cholesky;
+    cholesky.factorize(A.matrix);
+    after = threads();
+  });
+  factorising.join();
+  EXPECT_EQ(after, before);
 }
 
 
