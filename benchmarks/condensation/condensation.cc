@@ -337,7 +337,8 @@ namespace
         Eigen::MatrixXd A0;
         for (const auto o : {LastBlockOrdering::moved_last,
                              LastBlockOrdering::constrained_amd,
-                             LastBlockOrdering::interior_nested_dissection})
+                             LastBlockOrdering::interior_nested_dissection,
+                             LastBlockOrdering::automatic})
           {
             condensation::Parameters p;
             p.ordering              = o;

@@ -26,6 +26,8 @@ namespace dpana
         << ": about " << std::setprecision(3) << total() / GB << " GB (factor "
         << factor / GB << " GB, dense blocks W and A " << dense / GB
         << " GB, in use before " << current / GB << " GB)";
+      if (!ordering.empty())
+        s << ", ordering " << ordering;
       return s.str();
     }
 
@@ -40,6 +42,7 @@ namespace dpana
       m.made          = true;
       m.n_dofs        = n_dofs;
       m.n_gamma       = analysis.n_last;
+      m.ordering      = analysis.ordering;
       m.n_c           = n_c;
       m.current       = resident_memory();
       const double ng = analysis.n_last;

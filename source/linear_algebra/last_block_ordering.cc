@@ -27,6 +27,8 @@ namespace dpana
             return "constrained AMD";
           case LastBlockOrdering::interior_nested_dissection:
             return "interior nested dissection";
+          case LastBlockOrdering::automatic:
+            return "automatic";
         }
       return "";
     }
@@ -231,6 +233,37 @@ namespace dpana
 
 
 
+      // CHOLMOD's symbolic analysis of the pattern A (symmetric, lower
+      // triangle) under the ordering @p order found by @p method: the
+      // postorder of its elimination tree, and the nonzeros and the flops
+      // of the factor in common.lnz and common.fl.
+      std::vector<CholmodIndex>
+      analyze_ordering(cholmod_sparse            &A,
+                       std::vector<CholmodIndex> &order,
+                       const int                  method,
+                       cholmod_common            &common)
+      {
+        const std::size_t         n = order.size();
+        std::vector<CholmodIndex> parent(n), post(n), count(n), first(n),
+          level(n);
+        AssertThrow(cholmod_l_analyze_ordering(&A,
+                                               method,
+                                               order.data(),
+                                               nullptr,
+                                               0,
+                                               parent.data(),
+                                               post.data(),
+                                               count.data(),
+                                               first.data(),
+                                               level.data(),
+                                               &common),
+                    dealii::ExcMessage("CHOLMOD's symbolic analysis of an "
+                                       "ordering failed."));
+        return post;
+      }
+
+
+
       // The ordering followed by a postorder of its elimination tree
       // (CHOLMOD's symbolic analysis of the graph), which makes the columns
       // of each supernode consecutive, as cholmod_metis() does. (CHOLMOD
@@ -252,21 +285,8 @@ namespace dpana
         A.dtype         = CHOLMOD_DOUBLE;
         A.sorted        = 1;
         A.packed        = 1;
-        std::vector<CholmodIndex> parent(n), post(n), count(n), first(n),
-          level(n);
-        AssertThrow(cholmod_l_analyze_ordering(&A,
-                                               CHOLMOD_METIS,
-                                               order.data(),
-                                               nullptr,
-                                               0,
-                                               parent.data(),
-                                               post.data(),
-                                               count.data(),
-                                               first.data(),
-                                               level.data(),
-                                               &common),
-                    dealii::ExcMessage(
-                      "CHOLMOD's analysis of the METIS ordering failed."));
+        const std::vector<CholmodIndex> post =
+          analyze_ordering(A, order, CHOLMOD_METIS, common);
         std::vector<CholmodIndex> postordered(n);
         for (std::size_t k = 0; k < n; ++k)
           postordered[k] = order[post[k]];
@@ -304,7 +324,37 @@ namespace dpana
             given.push_back(i);
         return given;
       }
+
+
+
+      // The minimum degree ordering when CHOLMOD's test passes on the
+      // column counts of its factor, the nested dissection otherwise.
+      std::vector<CholmodIndex>
+      automatic(const CholmodMatrix     &K_lower,
+                const std::vector<bool> &is_last,
+                cholmod_common          &common)
+      {
+        std::vector<CholmodIndex> given =
+          constrained_amd(K_lower, is_last, common);
+        cholmod_sparse A = Eigen::viewAsCholmod(
+          K_lower.template selfadjointView<Eigen::Lower>());
+        analyze_ordering(A, given, CHOLMOD_GIVEN, common);
+        if (minimum_degree_suffices(common.fl, common.lnz, K_lower.nonZeros()))
+          return given;
+        return interior_nested_dissection(K_lower, is_last, common);
+      }
     } // namespace
+
+
+
+    bool
+    minimum_degree_suffices(const double flops,
+                            const double factor_nonzeros,
+                            const double matrix_entries)
+    {
+      return flops < 500. * factor_nonzeros ||
+             factor_nonzeros < 5. * matrix_entries;
+    }
 
 
 
@@ -323,6 +373,8 @@ namespace dpana
             return constrained_amd(K_lower, is_last, common);
           case LastBlockOrdering::interior_nested_dissection:
             return interior_nested_dissection(K_lower, is_last, common);
+          case LastBlockOrdering::automatic:
+            return automatic(K_lower, is_last, common);
         }
       return {};
     }

@@ -164,7 +164,7 @@ namespace dpana
       : impl(std::make_unique<Impl>())
       , n_rows(0)
       , n_block(64)
-      , last_ordering(LastBlockOrdering::interior_nested_dissection)
+      , last_ordering(LastBlockOrdering::automatic)
     {
       // CHOLMOD prints its warnings (e.g. "not positive definite") itself
       // unless told not to; dpana reports them through exceptions instead.
@@ -330,15 +330,43 @@ namespace dpana
 
 
     // The ordering of the chosen kind (last_block_ordering.h) is handed to
-    // CHOLMOD as the given one.
+    // CHOLMOD as the given one. The automatic choice tests the minimum
+    // degree ordering on the analysis CHOLMOD makes of it anyway, and orders
+    // and analyses a second time only when the test fails.
     void
     SparseCholesky::order_last(const CholmodMatrix &K_lower)
     {
       std::vector<bool> is_last(K_lower.rows(), false);
       for (const unsigned int k : last)
         is_last[k] = true;
+      LastBlockOrdering chosen = last_ordering;
+      if (chosen == LastBlockOrdering::automatic)
+        {
+          chosen = LastBlockOrdering::constrained_amd;
+          analyze_with(K_lower, is_last, chosen);
+          const Analysis a = impl->llt.analysis();
+          if (minimum_degree_suffices(a.factor_flops,
+                                      a.factor_nonzeros,
+                                      K_lower.nonZeros()))
+            {
+              record_analysis(chosen);
+              return;
+            }
+          chosen = LastBlockOrdering::interior_nested_dissection;
+        }
+      analyze_with(K_lower, is_last, chosen);
+      record_analysis(chosen);
+    }
+
+
+
+    void
+    SparseCholesky::analyze_with(const CholmodMatrix     &K_lower,
+                                 const std::vector<bool> &is_last,
+                                 const LastBlockOrdering  ordering)
+    {
       std::vector<CholmodIndex> given =
-        order_last_block(K_lower, is_last, last_ordering, impl->llt.cholmod());
+        order_last_block(K_lower, is_last, ordering, impl->llt.cholmod());
       impl->llt.analyze_given(K_lower, given);
       // A factor CHOLMOD cannot address or allocate is reported as
       // std::length_error, which the condensation turns into an input error
@@ -355,9 +383,21 @@ namespace dpana
       AssertThrow(impl->llt.permutation() == given,
                   dealii::ExcMessage("SparseCholesky: CHOLMOD did not keep "
                                      "the given ordering."));
+    }
+
+
+
+    // The analysis of the ordering CHOLMOD was given last, and the unknowns
+    // of the last block in the order of the factor's columns.
+    void
+    SparseCholesky::record_analysis(const LastBlockOrdering ordering)
+    {
       impl->analysis          = impl->llt.analysis();
       impl->analysis.n_last   = last.size();
-      impl->analysis.ordering = to_string(last_ordering);
+      impl->analysis.ordering = last_ordering == LastBlockOrdering::automatic ?
+                                  "automatic: " + to_string(ordering) :
+                                  to_string(ordering);
+      const std::vector<CholmodIndex> given = impl->llt.permutation();
       schur.resize(last.size());
       for (unsigned int k = 0; k < last.size(); ++k)
         schur[k] = free[given[given.size() - last.size() + k]];

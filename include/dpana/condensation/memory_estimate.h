@@ -53,6 +53,9 @@ namespace dpana
       double factor = 0;
       /// W and the copies of A (bytes).
       double dense = 0;
+      /// CHOLMOD's ordering (SparseCholesky::Analysis::ordering); empty for
+      /// MUMPS, whose statistics name its own.
+      std::string ordering;
 
       /**
        * The estimated peak, bytes.
@@ -65,7 +68,8 @@ namespace dpana
 
       /**
        * "1115508 dofs, n_Gamma = 933, n_c = 466: about 1.9 GB (factor
-       * 1.2 GB, dense blocks 0.01 GB, now 0.7 GB)".
+       * 1.2 GB, dense blocks 0.01 GB, now 0.7 GB), ordering automatic:
+       * constrained AMD".
        */
       std::string
       describe() const;

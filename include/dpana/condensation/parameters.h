@@ -53,7 +53,7 @@ namespace dpana
      *       set Factorisation back end = cholmod
      *       set Out-of-core directory  =
      *       set Columns per solve      = 256
-     *       set Schur ordering         = interior nested dissection
+     *       set Schur ordering         = automatic
      *       set Memory limit (GB)      = 0
      *       set Parallel route         = auto
      *       set Parallel assembly      = distributed
@@ -76,7 +76,7 @@ namespace dpana
        * (linear_algebra::LastBlockOrdering).
        */
       linear_algebra::LastBlockOrdering ordering =
-        linear_algebra::LastBlockOrdering::interior_nested_dissection;
+        linear_algebra::LastBlockOrdering::automatic;
       /**
        * Whether MUMPS orders the unknowns itself (`Schur ordering = by
        * MUMPS`, Backend::mumps only) instead of being given #ordering

@@ -124,7 +124,8 @@ namespace dpana
         double factor_nonzeros = 0;
         /// Floating point operations of the factorisation.
         double factor_flops = 0;
-        /// The ordering: "CHOLMOD" or to_string(LastBlockOrdering).
+        /// The ordering: "CHOLMOD", to_string(LastBlockOrdering), or
+        /// "automatic: " followed by the one the automatic choice took.
         std::string ordering;
       };
 
@@ -174,9 +175,10 @@ namespace dpana
                           const std::vector<unsigned int>         &last_dofs);
 
       /**
-       * The ordering factorize_with_last() uses (default: the nested
-       * dissection of the interior, LastBlockOrdering documents the
-       * choices; benchmarks/condensation compares them).
+       * The ordering factorize_with_last() uses (default: automatic, the
+       * minimum degree ordering where CHOLMOD's test finds it good, the
+       * nested dissection of the interior otherwise; LastBlockOrdering
+       * documents the choices; benchmarks/condensation compares them).
        */
       void
       set_last_block_ordering(const LastBlockOrdering ordering);
@@ -341,6 +343,22 @@ namespace dpana
        */
       void
       order_last(const CholmodMatrix &K_lower);
+
+      /**
+       * CHOLMOD's symbolic analysis with the ordering @p ordering (not
+       * automatic) of the unknowns, those with @p is_last last.
+       */
+      void
+      analyze_with(const CholmodMatrix     &K_lower,
+                   const std::vector<bool> &is_last,
+                   const LastBlockOrdering  ordering);
+
+      /**
+       * Keeps the analysis of the last analyze_with() (made with
+       * @p ordering) and the order of the last block's unknowns in it.
+       */
+      void
+      record_analysis(const LastBlockOrdering ordering);
 
       struct Impl;
       std::unique_ptr<Impl> impl;

@@ -248,7 +248,10 @@ namespace
     SparseCholesky cholesky;
     cholesky.set_last_block_ordering(ordering);
     cholesky.factorize_with_last(K, constraints, surface);
-    EXPECT_EQ(cholesky.analysis().ordering, to_string(ordering));
+    if (ordering == LastBlockOrdering::automatic)
+      EXPECT_EQ(cholesky.analysis().ordering.rfind("automatic: ", 0), 0u);
+    else
+      EXPECT_EQ(cholesky.analysis().ordering, to_string(ordering));
     EXPECT_EQ(cholesky.analysis().n_last, n + 2);
     const auto &dofs = cholesky.schur_dofs();
     ASSERT_EQ(dofs.size(), n + 2);
@@ -340,10 +343,126 @@ TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
 {
   for (const auto ordering : {LastBlockOrdering::moved_last,
                               LastBlockOrdering::constrained_amd,
-                              LastBlockOrdering::interior_nested_dissection})
+                              LastBlockOrdering::interior_nested_dissection,
+                              LastBlockOrdering::automatic})
     {
       SCOPED_TRACE(to_string(ordering));
       check_last_block(ordering);
+    }
+}
+
+
+
+namespace
+{
+  // The (2d + 1)-point Laplacian plus the identity on an n^d grid of unknowns
+  // (d = 2, 3), without a dense copy.
+  struct GridLaplacian
+  {
+    dealii::SparsityPattern      pattern;
+    dealii::SparseMatrix<double> matrix;
+
+    GridLaplacian(const unsigned int d, const unsigned int n)
+    {
+      const unsigned int N      = d == 2 ? n * n : n * n * n;
+      const unsigned int step[] = {1, n, n * n};
+      std::vector<std::tuple<unsigned, unsigned, double>> entries;
+      for (unsigned int k = 0; k < N; ++k)
+        {
+          entries.emplace_back(k, k, 2.0 * d + 1.0);
+          for (unsigned int a = 0; a < d; ++a)
+            {
+              const unsigned int i = (k / step[a]) % n;
+              if (i > 0)
+                entries.emplace_back(k, k - step[a], -1.0);
+              if (i + 1 < n)
+                entries.emplace_back(k, k + step[a], -1.0);
+            }
+        }
+      dealii::DynamicSparsityPattern dsp(N, N);
+      for (const auto &[r, c, v] : entries)
+        dsp.add(r, c);
+      pattern.copy_from(dsp);
+      matrix.reinit(pattern);
+      for (const auto &[r, c, v] : entries)
+        matrix.add(r, c, v);
+    }
+  };
+
+  // The analysis of the factorisation of @p A with its first n^(d-1)
+  // unknowns (one face of the grid) last, under @p ordering.
+  SparseCholesky::Analysis
+  analysis_with_face_last(const GridLaplacian    &A,
+                          const unsigned int      face,
+                          const LastBlockOrdering ordering)
+  {
+    std::vector<unsigned int> last(face);
+    for (unsigned int k = 0; k < face; ++k)
+      last[k] = k;
+    SparseCholesky cholesky;
+    cholesky.set_last_block_ordering(ordering);
+    cholesky.factorize_with_last(A.matrix,
+                                 dealii::AffineConstraints<double>(),
+                                 last);
+    return cholesky.analysis();
+  }
+} // namespace
+
+
+
+// The automatic ordering follows CHOLMOD's own default strategy
+// (cholmod_core.h, Common->nmethods = 0): the minimum degree ordering (here
+// CAMD, with the face last) is kept when its factor costs fewer than 500
+// flops per entry or has fewer than 5 entries per entry of the matrix, and
+// the nested dissection is taken otherwise. The 2D grid (60 x 60: 41 flops
+// per entry) passes CHOLMOD's test and the 3D grid (24^3: 693 flops per
+// entry, 49 entries per matrix entry) fails it, so that both branches are
+// taken; on each, the automatic choice is the ordering the test names, with
+// that ordering's factor.
+TEST(SparseCholesky, AutomaticOrderingFollowsCholmodsTest)
+{
+  for (const auto &[d, n] : {std::pair{2u, 60u}, std::pair{3u, 24u}})
+    {
+      SCOPED_TRACE("dimension " + std::to_string(d));
+      const GridLaplacian            A(d, n);
+      const unsigned int             face = d == 2 ? n : n * n;
+      const SparseCholesky::Analysis amd =
+        analysis_with_face_last(A, face, LastBlockOrdering::constrained_amd);
+      const bool amd_suffices =
+        dpana::linear_algebra::minimum_degree_suffices(amd.factor_flops,
+                                                       amd.factor_nonzeros,
+                                                       amd.matrix_entries);
+      EXPECT_EQ(amd_suffices, d == 2);
+      const LastBlockOrdering expected =
+        amd_suffices ? LastBlockOrdering::constrained_amd :
+                       LastBlockOrdering::interior_nested_dissection;
+      const SparseCholesky::Analysis by_hand =
+        analysis_with_face_last(A, face, expected);
+      const SparseCholesky::Analysis automatic =
+        analysis_with_face_last(A, face, LastBlockOrdering::automatic);
+      EXPECT_EQ(automatic.ordering, "automatic: " + to_string(expected));
+      EXPECT_EQ(automatic.factor_nonzeros, by_hand.factor_nonzeros);
+      EXPECT_EQ(automatic.factor_flops, by_hand.factor_flops);
+
+      // The same choice where the ordering is computed alone (for MUMPS),
+      // from the column counts of its own analysis.
+      using dpana::linear_algebra::CholmodIndex;
+      using dpana::linear_algebra::CholmodMatrix;
+      std::vector<Eigen::Triplet<double, CholmodIndex>> entries;
+      for (auto it = A.matrix.begin(); it != A.matrix.end(); ++it)
+        if (it->column() <= it->row())
+          entries.emplace_back(it->row(), it->column(), it->value());
+      CholmodMatrix K_lower(A.matrix.m(), A.matrix.m());
+      K_lower.setFromTriplets(entries.begin(), entries.end());
+      std::vector<bool> is_last(A.matrix.m(), false);
+      std::fill(is_last.begin(), is_last.begin() + face, true);
+      cholmod_common common;
+      cholmod_l_start(&common);
+      using dpana::linear_algebra::order_last_block;
+      EXPECT_EQ(order_last_block(
+                  K_lower, is_last, LastBlockOrdering::automatic, common),
+                order_last_block(K_lower, is_last, expected, common));
+      cholmod_l_finish(&common);
     }
 }
 
