@@ -332,28 +332,35 @@ namespace dpana
     // The ordering of the chosen kind (last_block_ordering.h) is handed to
     // CHOLMOD as the given one. The automatic choice tests the minimum
     // degree ordering on the analysis CHOLMOD makes of it anyway, and orders
-    // and analyses a second time only when the test fails.
+    // and analyses a second time only when the test fails (or when the
+    // minimum degree factor is too large for CHOLMOD to analyse).
     void
     SparseCholesky::order_last(const CholmodMatrix &K_lower)
     {
       std::vector<bool> is_last(K_lower.rows(), false);
       for (const unsigned int k : last)
         is_last[k] = true;
-      LastBlockOrdering chosen = last_ordering;
-      if (chosen == LastBlockOrdering::automatic)
-        {
-          chosen = LastBlockOrdering::constrained_amd;
-          analyze_with(K_lower, is_last, chosen);
-          const Analysis a = impl->llt.analysis();
-          if (minimum_degree_suffices(a.factor_flops,
-                                      a.factor_nonzeros,
-                                      K_lower.nonZeros()))
-            {
-              record_analysis(chosen);
-              return;
-            }
-          chosen = LastBlockOrdering::interior_nested_dissection;
-        }
+      if (last_ordering == LastBlockOrdering::automatic)
+        try
+          {
+            analyze_with(K_lower, is_last, LastBlockOrdering::constrained_amd);
+            const Analysis a = impl->llt.analysis();
+            if (minimum_degree_suffices(a.factor_flops,
+                                        a.factor_nonzeros,
+                                        K_lower.nonZeros()))
+              {
+                record_analysis(LastBlockOrdering::constrained_amd);
+                return;
+              }
+          }
+        catch (const std::length_error &)
+          {
+            // The nested dissection below has the smaller factor.
+          }
+      const LastBlockOrdering chosen =
+        last_ordering == LastBlockOrdering::automatic ?
+          LastBlockOrdering::interior_nested_dissection :
+          last_ordering;
       analyze_with(K_lower, is_last, chosen);
       record_analysis(chosen);
     }
