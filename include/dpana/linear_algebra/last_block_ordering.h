@@ -73,11 +73,12 @@ namespace dpana
        * CHOLMOD's own default strategy (nmethods = 0, cholmod_core.h) with
        * $\Gamma$ last: constrained_amd first, kept when
        * minimum_degree_suffices() says its factor is good; otherwise
-       * interior_nested_dissection. In 2D, and in small 3D bodies, the
-       * minimum degree ordering costs a few milliseconds where METIS costs
-       * tenths of a second, and the factor it gives is at most a third
-       * larger; on 3D meshes of some size the nested dissection's factor is
-       * smaller by a factor of 1.4 to 2.3 (benchmarks/condensation).
+       * interior_nested_dissection. In 2D, and in 3D bodies of a few
+       * thousand unknowns, the minimum degree ordering takes less time than
+       * METIS (0.2 to 0.3 s for 10^5 unknowns in 2D) and its factor is at
+       * most a third larger; in larger 3D bodies the nested dissection's
+       * factor is smaller by a factor of 1.4 to 2.3
+       * (benchmarks/condensation).
        */
       automatic
     };
