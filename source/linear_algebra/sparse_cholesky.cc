@@ -6,10 +6,10 @@
 #include <dpana/linear_algebra/schur_factorization.h>
 #include <dpana/linear_algebra/sparse_cholesky.h>
 
-#include <Eigen/CholmodSupport>
-
 #include <algorithm>
 #include <sstream>
+
+#include "sparse_cholesky_impl.h"
 
 namespace dpana
 {
@@ -17,102 +17,6 @@ namespace dpana
   {
     namespace
     {
-      // CHOLMOD's supernodal LL^T through Eigen's wrapper. The wrapper keeps
-      // the column at which a failed factorisation broke down ("minor") to
-      // itself; this subclass makes it visible for the error message.
-      class SupernodalLLT
-        : public Eigen::CholmodSupernodalLLT<CholmodMatrix, Eigen::Lower>
-      {
-      public:
-        long
-        failed_column() const
-        {
-          return this->m_cholmodFactor ?
-                   static_cast<long>(this->m_cholmodFactor->minor) :
-                   -1;
-        }
-
-        // The symbolic analysis with the given fill-reducing permutation
-        // (factor column k is unknown perm[k]) and without the postordering
-        // of the elimination tree, which could move columns of the last
-        // block forward.
-        void
-        analyze_given(const CholmodMatrix       &K_lower,
-                      std::vector<CholmodIndex> &perm)
-        {
-          if (this->m_cholmodFactor)
-            cholmod_l_free_factor(&this->m_cholmodFactor, &this->cholmod());
-          cholmod_sparse A = Eigen::viewAsCholmod(
-            K_lower.template selfadjointView<Eigen::Lower>());
-          cholmod_common &c         = this->cholmod();
-          const int       nmethods  = c.nmethods;
-          const int       ordering  = c.method[0].ordering;
-          const int       postorder = c.postorder;
-          c.nmethods                = 1;
-          c.method[0].ordering      = CHOLMOD_GIVEN;
-          c.postorder               = 0;
-          this->m_cholmodFactor =
-            cholmod_l_analyze_p(&A, perm.data(), nullptr, 0, &c);
-          c.nmethods            = nmethods;
-          c.method[0].ordering  = ordering;
-          c.postorder           = postorder;
-          this->m_isInitialized = true;
-          this->m_info =
-            this->m_cholmodFactor ? Eigen::Success : Eigen::NumericalIssue;
-          this->m_analysisIsOk      = this->m_cholmodFactor != nullptr;
-          this->m_factorizationIsOk = false;
-        }
-
-        // The fill-reducing permutation chosen by the last analysis.
-        std::vector<CholmodIndex>
-        permutation() const
-        {
-          const auto *p =
-            static_cast<const CholmodIndex *>(this->m_cholmodFactor->Perm);
-          return std::vector<CholmodIndex>(p, p + this->m_cholmodFactor->n);
-        }
-
-        const cholmod_factor &
-        factor() const
-        {
-          return *this->m_cholmodFactor;
-        }
-
-        // What the last analysis found (CHOLMOD keeps the counts of the
-        // ordering it selected in its workspace).
-        SparseCholesky::Analysis
-        analysis()
-        {
-          SparseCholesky::Analysis a;
-          const cholmod_factor    &L = *this->m_cholmodFactor;
-          const cholmod_common    &c = this->cholmod();
-          a.n_unknowns               = L.n;
-          a.factor_entries           = L.is_super ? double(L.xsize) : c.lnz;
-          a.factor_indices           = L.is_super ? double(L.ssize) : c.lnz;
-          a.largest_update           = L.is_super ? double(L.maxcsize) : 0.0;
-          a.factor_nonzeros          = c.lnz;
-          a.factor_flops             = c.fl;
-          return a;
-        }
-      };
-
-
-
-      // CHOLMOD's status after a failed analysis or factorisation: a factor
-      // too large to address or to allocate is std::length_error.
-      void
-      throw_if_too_large(const int status, const Eigen::Index n_unknowns)
-      {
-        if (status == CHOLMOD_TOO_LARGE || status == CHOLMOD_OUT_OF_MEMORY)
-          throw std::length_error(
-            "the factor of " + std::to_string(n_unknowns) + " unknowns is " +
-            (status == CHOLMOD_TOO_LARGE ? "too large for CHOLMOD to address" :
-                                           "more than the memory CHOLMOD "
-                                           "could allocate"));
-      }
-
-
-
       // The lower triangle of the rows and columns i of K with index[i] >= 0,
       // renumbered to index[i] (increasing with i), in compressed columns,
       // without explicit zeros. Column c of the lower triangle holds the
@@ -148,16 +52,6 @@ namespace dpana
         return K_lower;
       }
     } // namespace
-
-
-    struct SparseCholesky::Impl
-    {
-      SupernodalLLT                                         llt;
-      bool                                                  factorized = false;
-      Analysis                                              analysis;
-      std::function<void(const SparseCholesky::Analysis &)> check;
-    };
-
 
 
     SparseCholesky::SparseCholesky()
@@ -288,7 +182,8 @@ namespace dpana
       serial_openmp_regions();
       impl->llt.factorize(K_lower);
       if (impl->llt.info() != Eigen::Success)
-        throw_if_too_large(impl->llt.cholmod().status, K_lower.rows());
+        internal::throw_if_too_large(impl->llt.cholmod().status,
+                                     K_lower.rows());
       if (impl->llt.info() != Eigen::Success)
         {
           std::ostringstream message;
@@ -302,125 +197,6 @@ namespace dpana
           throw NotPositiveDefiniteError(message.str());
         }
       impl->factorized = true;
-    }
-
-
-
-    // @sect3{The surface unknowns last}
-    //
-    // The free degrees of freedom a surface dof stands for: itself if it is
-    // free, its masters if it is constrained (a support or a Dirichlet
-    // condition without masters stands for none).
-    void
-    SparseCholesky::factorize_with_last(
-      const dealii::SparseMatrix<double>      &K,
-      const dealii::AffineConstraints<double> &constraints,
-      const std::vector<unsigned int>         &last_dofs)
-    {
-      const CholmodMatrix     K_lower = reduce(K, constraints);
-      const std::vector<bool> is_last =
-        unknowns_of_dofs(last_dofs, constraints, reduced_index, free.size());
-      last.clear();
-      for (unsigned int k = 0; k < free.size(); ++k)
-        if (is_last[k])
-          last.push_back(k);
-      factorize_lower(K_lower);
-    }
-
-
-
-    // The ordering of the chosen kind (last_block_ordering.h) is handed to
-    // CHOLMOD as the given one. The automatic choice tests the minimum
-    // degree ordering on the analysis CHOLMOD makes of it anyway, and orders
-    // and analyses a second time only when the test fails (or when the
-    // minimum degree factor is too large for CHOLMOD to analyse).
-    void
-    SparseCholesky::order_last(const CholmodMatrix &K_lower)
-    {
-      std::vector<bool> is_last(K_lower.rows(), false);
-      for (const unsigned int k : last)
-        is_last[k] = true;
-      if (last_ordering == LastBlockOrdering::automatic)
-        try
-          {
-            analyze_with(K_lower, is_last, LastBlockOrdering::constrained_amd);
-            const Analysis a = impl->llt.analysis();
-            if (minimum_degree_suffices(a.factor_flops,
-                                        a.factor_nonzeros,
-                                        K_lower.nonZeros()))
-              {
-                record_analysis(LastBlockOrdering::constrained_amd);
-                return;
-              }
-          }
-        catch (const std::length_error &)
-          {
-            // The nested dissection below has the smaller factor.
-          }
-      const LastBlockOrdering chosen =
-        last_ordering == LastBlockOrdering::automatic ?
-          LastBlockOrdering::interior_nested_dissection :
-          last_ordering;
-      analyze_with(K_lower, is_last, chosen);
-      record_analysis(chosen);
-    }
-
-
-
-    void
-    SparseCholesky::analyze_with(const CholmodMatrix     &K_lower,
-                                 const std::vector<bool> &is_last,
-                                 const LastBlockOrdering  ordering)
-    {
-      std::vector<CholmodIndex> given =
-        order_last_block(K_lower, is_last, ordering, impl->llt.cholmod());
-      impl->llt.analyze_given(K_lower, given);
-      // A factor CHOLMOD cannot address or allocate is reported as
-      // std::length_error, which the condensation turns into an input error
-      // naming the sizes. (With the 64-bit indices the first is out of
-      // reach of any mesh this code builds.)
-      const int status = impl->llt.cholmod().status;
-      if (impl->llt.info() != Eigen::Success)
-        throw_if_too_large(status, K_lower.rows());
-      AssertThrow(impl->llt.info() == Eigen::Success,
-                  dealii::ExcMessage(
-                    "SparseCholesky: CHOLMOD's analysis with the given "
-                    "ordering failed (CHOLMOD status " +
-                    std::to_string(status) + ")"));
-      AssertThrow(impl->llt.permutation() == given,
-                  dealii::ExcMessage("SparseCholesky: CHOLMOD did not keep "
-                                     "the given ordering."));
-    }
-
-
-
-    // The analysis of the ordering CHOLMOD was given last, and the unknowns
-    // of the last block in the order of the factor's columns.
-    void
-    SparseCholesky::record_analysis(const LastBlockOrdering ordering)
-    {
-      impl->analysis          = impl->llt.analysis();
-      impl->analysis.n_last   = last.size();
-      impl->analysis.ordering = last_ordering == LastBlockOrdering::automatic ?
-                                  "automatic: " + to_string(ordering) :
-                                  to_string(ordering);
-      const std::vector<CholmodIndex> given = impl->llt.permutation();
-      schur.resize(last.size());
-      for (unsigned int k = 0; k < last.size(); ++k)
-        schur[k] = free[given[given.size() - last.size() + k]];
-    }
-
-
-
-    const cholmod_factor &
-    SparseCholesky::factor() const
-    {
-      AssertThrow(impl->factorized && !last.empty(),
-                  dealii::ExcMessage(
-                    "SparseCholesky: factorize_with_last() first."));
-      const cholmod_factor &L = impl->llt.factor();
-      AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
-      return L;
     }
 
 
