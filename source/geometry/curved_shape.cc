@@ -13,6 +13,8 @@
 #include <array>
 #include <cmath>
 
+#include "refined_quadrilaterals.h"
+
 namespace dpana
 {
   namespace geometry
@@ -66,25 +68,6 @@ namespace dpana
     // @sect3{From quadrilaterals to simplices}
     namespace
     {
-      // Refines, n times, the cells that intersect the disc of radius rho
-      // around the point p. deal.II keeps at most one hanging node per face.
-      void
-      refine_near(dealii::Triangulation<2> &quads,
-                  const dealii::Point<2>    p,
-                  const double              rho,
-                  const unsigned int        n)
-      {
-        for (unsigned int cycle = 0; cycle < n; ++cycle)
-          {
-            for (const auto &cell : quads.active_cell_iterators())
-              if (cell->center().distance(p) < rho + 0.5 * cell->diameter())
-                cell->set_refine_flag();
-            quads.execute_coarsening_and_refinement();
-          }
-      }
-
-
-
       // The fan of triangles of one polygon around its centre vertex,
       // counterclockwise (positive Jacobian).
       void
@@ -115,11 +98,12 @@ namespace dpana
       // header. The vertices of the quadrilateral mesh keep their indices
       // (unused ones are removed later); the cell centres are appended.
       void
-      quads_to_triangles(const dealii::Triangulation<2>   &quads,
-                         std::vector<dealii::Point<2>>    &vertices,
-                         std::vector<dealii::CellData<2>> &triangles)
+      quads_to_triangles(const internal::RefinedQuadrilaterals &refined,
+                         std::vector<dealii::Point<2>>         &vertices,
+                         std::vector<dealii::CellData<2>>      &triangles)
       {
-        vertices = quads.get_vertices();
+        const dealii::Triangulation<2> &quads = refined.mesh();
+        vertices                              = quads.get_vertices();
         triangles.clear();
         // The boundary of the reference square, counterclockwise: each entry
         // is (face, first vertex, second vertex).
@@ -145,7 +129,7 @@ namespace dpana
                   }
               }
             const unsigned int centre = vertices.size();
-            vertices.push_back(cell->center(/*respect_manifold=*/true));
+            vertices.push_back(refined.centre(cell));
             add_fan(vertices, centre, polygon, triangles);
           }
       }
@@ -252,16 +236,16 @@ namespace dpana
       dealii::Triangulation<dim> &tria,
       const unsigned int          n_global_refinements) const
     {
-      dealii::Triangulation<2> quads(
+      dealii::Triangulation<2> coarse(
         dealii::Triangulation<2>::limit_level_difference_at_vertices);
-      make_quadrilaterals(quads);
+      make_quadrilaterals(coarse);
+      internal::RefinedQuadrilaterals quads(coarse);
       quads.refine_global(n_global_refinements);
-      refine_near(quads,
-                  contact_point(),
-                  refinement.radius,
-                  refinement.n_refinements);
+      quads.refine_near(contact_point(),
+                        refinement.radius,
+                        refinement.n_refinements);
       for (const auto &[point, zone] : further_refinements())
-        refine_near(quads, point, zone.radius, zone.n_refinements);
+        quads.refine_near(point, zone.radius, zone.n_refinements);
 
       std::vector<dealii::Point<2>>    vertices_2d;
       std::vector<dealii::CellData<2>> triangles;

@@ -60,14 +60,17 @@ namespace dpana
      * manifolds describe the circles, and the contact refinements around
      * the point where the shape touches the other body.
      *
-     * The curved shapes are first meshed with quadrilaterals, because deal.II
-     * refines quadrilaterals along their manifolds: every vertex created on
-     * the curved boundary lies exactly on the circle, and the interior
-     * vertices follow a transfinite interpolation of the boundary, which
-     * keeps the cells well shaped. The global refinements and the contact
-     * refinements (of the cells that intersect the disc of the refinement
-     * radius around contact_point()) are therefore applied to the
-     * quadrilaterals.
+     * The curved shapes are first meshed with quadrilaterals, because
+     * quadrilaterals refine along the manifolds of their coarse cells: every
+     * vertex created on the curved boundary lies exactly on the circle, and
+     * the interior vertices follow a transfinite interpolation of the
+     * boundary, which keeps the cells well shaped. The global refinements
+     * and the contact refinements (of the cells that intersect the disc of
+     * the refinement radius around contact_point()) are therefore applied
+     * to the quadrilaterals. Each new vertex is placed by the closed-form
+     * map of its coarse cell at its dyadic reference point, the position
+     * deal.II's refinement along the manifolds gives (to rounding) without
+     * its Newton iteration per vertex (internal::RefinedQuadrilaterals).
      *
      * The local refinements leave hanging nodes, which
      * GridGenerator::convert_hypercube_to_simplex_mesh does not accept
