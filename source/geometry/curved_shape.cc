@@ -210,9 +210,9 @@ namespace dpana
 
 
 
-    // 2 triangles per quadrilateral, 4 children per refinement, and in 3D
-    // 3 tetrahedra per prism of each layer. The contact refinements, local,
-    // are left out of the estimate.
+    // 4 triangles per quadrilateral (the fan around its centre), 4 children
+    // per refinement, and in 3D 3 tetrahedra per prism of each layer. The
+    // contact refinements, local, are left out of the estimate.
     template <int dim>
     std::pair<double, std::string>
     CurvedShape<dim>::estimated_size(
@@ -221,7 +221,7 @@ namespace dpana
       dealii::Triangulation<2> quads;
       make_quadrilaterals(quads);
       double n_cells =
-        2. * quads.n_active_cells() * std::pow(4., n_global_refinements);
+        4. * quads.n_active_cells() * std::pow(4., n_global_refinements);
       if constexpr (dim == 3)
         n_cells *=
           3. * (z_planes(0).size() - 1.) * std::pow(2., n_global_refinements);
