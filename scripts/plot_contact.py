@@ -12,7 +12,13 @@ estimated from the neighbouring centroids.
 import csv
 import sys
 
-import matplotlib
+# Exit status 3 without matplotlib: dpana then warns "no plot" (one python
+# start per run instead of a second one to test the import).
+NO_MATPLOTLIB = 3
+try:
+    import matplotlib
+except ImportError:
+    sys.exit(NO_MATPLOTLIB)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

@@ -22,6 +22,8 @@
 #include <functional>
 #include <iomanip>
 
+#include <sys/wait.h>
+
 namespace dpana
 {
   namespace output
@@ -207,11 +209,12 @@ namespace dpana
       const std::string python = "/usr/bin/python3";
       if (!std::filesystem::exists(script))
         return "no plot: " + script + " not found";
-      if (std::system(
-            (python + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) != 0)
+      const int status =
+        std::system((python + " " + script + " " + csv + " " + png).c_str());
+      // The script's exit status 3: no matplotlib.
+      if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 3)
         return "no plot: " + python + " has no matplotlib";
-      if (std::system(
-            (python + " " + script + " " + csv + " " + png).c_str()) != 0)
+      if (status != 0)
         return "the plot script failed";
       return "";
     }

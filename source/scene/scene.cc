@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <sstream>
 
@@ -410,13 +411,29 @@ namespace dpana
                           "writing output to " + output_parameters.directory);
         std::ofstream(staging + "/parameters.prm") << parameters_prm;
         std::ofstream(staging + "/parameters.json") << parameters_json;
+        // The contact files first, so that the plot of contact.csv (a python
+        // process of about a second) is drawn while the bodies are written.
+        std::future<std::string> plot;
+        if (with_contact)
+          {
+            write_contact_output(staging);
+            if (output_parameters.plot)
+              plot = std::async(std::launch::async,
+                                output::plot_contact,
+                                staging + "/contact.csv",
+                                staging + "/contact.png");
+          }
         if (output_parameters.write_vtu &&
             writes_in_pieces(condensation_parameters.route))
           write_bodies_on_all_ranks(bodies, staging);
         else if (output_parameters.write_vtu)
           output::write_bodies(bodies, staging);
-        if (with_contact)
-          write_contact_output(staging);
+        if (plot.valid())
+          {
+            const std::string warning = plot.get();
+            if (!warning.empty())
+              std::cout << "warning: " << warning << std::endl;
+          }
       }
       write_summary(staging);
       directory.commit();
@@ -446,13 +463,6 @@ namespace dpana
                              ", " + std::to_string(problem_.n_elements()) +
                              " contact elements";
           io::write_fclib_local(directory + "/problem.hdf5", problem_, info);
-        }
-      if (output_parameters.plot)
-        {
-          const std::string warning =
-            output::plot_contact(csv, directory + "/contact.png");
-          if (!warning.empty())
-            std::cout << "warning: " << warning << std::endl;
         }
     }
 
