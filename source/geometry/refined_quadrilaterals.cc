@@ -25,7 +25,7 @@ namespace dpana
         flat.reset_all_manifolds();
         flat.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
         // The coarse vertices stay where the shape put them.
-        placed.assign(flat.n_vertices(), true);
+        placed = flat.get_used_vertices();
         place_new_vertices();
       }
 
@@ -110,6 +110,8 @@ namespace dpana
                 }
           }
 
+        // A new vertex takes a slot that no vertex used before or is
+        // appended: either way it is not placed yet.
         placed.resize(flat.n_vertices(), false);
         for (const auto &cell : flat.active_cell_iterators())
           for (const unsigned int i : cell->vertex_indices())

@@ -28,8 +28,8 @@ namespace dpana
        * of the refined mesh is therefore the image F_K(u, v) of a dyadic
        * point (u, v) of the unit square under the map F_K of its coarse
        * cell K. For the transfinite interpolation of a disc that pull-back
-       * is a Newton iteration per vertex and took more than half the time
-       * of building a body of 3·10⁵ unknowns.
+       * is a Newton iteration per vertex, and it took half of the assembly
+       * phase of a circular body of 3·10⁵ unknowns.
        *
        * Here the mesh is refined without manifolds, every cell keeps its
        * square [u0, u0 + l] x [v0, v0 + l] in its coarse cell, and each new
