@@ -15,6 +15,18 @@ namespace dpana
   {
     namespace internal
     {
+      void
+      flag_cells_near(dealii::Triangulation<2> &tria,
+                      const dealii::Point<2>   &p,
+                      const double              rho)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->center().distance(p) < rho + 0.5 * cell->diameter())
+            cell->set_refine_flag();
+      }
+
+
+
       RefinedQuadrilaterals::RefinedQuadrilaterals(
         const dealii::Triangulation<2> &curved)
         : curved(curved)
@@ -58,9 +70,7 @@ namespace dpana
       {
         for (unsigned int cycle = 0; cycle < n; ++cycle)
           {
-            for (const auto &cell : flat.active_cell_iterators())
-              if (cell->center().distance(p) < rho + 0.5 * cell->diameter())
-                cell->set_refine_flag();
+            flag_cells_near(flat, p, rho);
             flat.execute_coarsening_and_refinement();
             place_new_vertices();
           }

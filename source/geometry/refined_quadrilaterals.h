@@ -18,6 +18,18 @@ namespace dpana
     namespace internal
     {
       /**
+       * Flags for refinement the active cells of @p tria that intersect the
+       * disc of radius @p rho around @p p (a cell's centre, the mean of its
+       * vertices, closer than rho plus half its diameter).
+       */
+      void
+      flag_cells_near(dealii::Triangulation<2> &tria,
+                      const dealii::Point<2>   &p,
+                      const double              rho);
+
+
+
+      /**
        * A quadrilateral mesh refined as deal.II refines it along the
        * manifolds of its coarse cells, with every vertex placed by a closed
        * formula instead of by the manifolds.

@@ -36,9 +36,7 @@ namespace
   {
     for (unsigned int cycle = 0; cycle < n; ++cycle)
       {
-        for (const auto &cell : tria.active_cell_iterators())
-          if (cell->center().distance(p) < rho + 0.5 * cell->diameter())
-            cell->set_refine_flag();
+        dpana::geometry::internal::flag_cells_near(tria, p, rho);
         tria.execute_coarsening_and_refinement();
       }
   }
