@@ -81,14 +81,26 @@ def cavity(gf, msh):
     return mesh
 
 
-def solve(gf, msh, ratio, args):
-    """Builds and solves the model; returns the body and its record."""
-    mesh = gf.Mesh("import", "gmsh", msh[0])
-    width = 15 if ratio is None else 20 if args.cavity else 16
+def cylinder(gf, msh, width):
+    """The cylinder's half and its regions: the arc x <= width (the
+    candidate contact faces) and the axis."""
+    mesh = gf.Mesh("import", "gmsh", msh)
     mesh.set_region(CONTACT, boundary_faces(
         mesh, lambda x, y: x <= width + 1e-9 and y < R
         and abs(math.hypot(x, y - R) - R) < 1e-6 * R))
     mesh.set_region(AXIS, boundary_faces(mesh, lambda x, y: abs(x) < 1e-9))
+    return mesh
+
+
+def level_size(level):
+    """h_c of a level (the module's docstring)."""
+    return (math.pi * R / 4) / 2 ** (level + 5)
+
+
+def solve(gf, msh, ratio, args):
+    """Builds and solves the model; returns the body and its record."""
+    mesh = cylinder(gf, msh[0], 15 if ratio is None else
+                    20 if args.cavity else 16)
     E1 = E * max(1.0, ratio or 1.0)
     body = ElasticBody(mesh, E1, NU)
     body.symmetry(AXIS)
@@ -144,7 +156,7 @@ def main():
         args.ratio = 1.0
     if args.mu < 0:
         parser.error("--mu must be >= 0")
-    hc = (math.pi * R / 4) / 2 ** (args.level + 5)
+    hc = level_size(args.level)
     rho = 14.0 if args.ratio is None else 21.0 if args.cavity else 17.0
     with tempfile.TemporaryDirectory(prefix="getfem_hertz_") as tmp:
         start = time.perf_counter()
