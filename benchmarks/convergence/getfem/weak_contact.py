@@ -4,18 +4,23 @@
 level L): GetFEM's integral contact brick with a rigid obstacle
 (non-symmetric Alart-Curnier, augmentation r = E) and a multiplier field
 on the candidate faces, instead of hertz.py's nodal brick:
-  P0  piecewise constant, one value per face;
-  P1  piecewise linear, one value per surface node.
+  P0         piecewise constant, one value per face;
+  P1         piecewise linear, one value per surface node;
+  P1-lumped  the same, with the contact integrals taken by the vertex
+             rule of each face (the trapezoidal rule: GetFEM's IM_NC(2,1)),
+             which makes the weak conditions nodal ones, those of the
+             nodal brick with the tributary lengths as weights.
 It tells whether the small a_m error of the nodal brick on the coarse
 levels comes from its nodal conditions or from the degree of its
 multipliers (README.md, "What does not close the remaining gaps").
 
 The pressure p = -lambda_n acts along the obstacle's normal y (the
 resultant is the load). a_m = 2 (int p x^2 ds / int p ds)^(1/2) over the
-candidate faces, with a quadrature exact for the products; N_max is the
-largest multiplier value.
+candidate faces, with a quadrature exact for the products of the
+multiplier field (also for P1-lumped, whose nodal values it interpolates
+linearly); N_max is the largest multiplier value.
 
-  weak_contact.py --level L --multiplier P0|P1
+  weak_contact.py --level L --multiplier P0|P1|P1-lumped
 
 Prints one JSON record (sizes, Newton iterations, a_m, N_max, resultant,
 the time of the GetFEM work).
@@ -48,8 +53,10 @@ def solve(gf, msh, multiplier):
     md.add_initialized_fem_data("obstacle", mf_obstacle,
                                 mf_obstacle.eval("y"))
     md.add_initialized_data("r", [E])
+    mim = (gf.MeshIm(mesh, gf.Integ("IM_NC(2,1)"))
+           if multiplier == "P1-lumped" else body.mim)
     md.add_integral_contact_with_rigid_obstacle_brick(
-        body.mim, "u", "lambda_n", "obstacle", "r", CONTACT, 1)
+        mim, "u", "lambda_n", "obstacle", "r", CONTACT, 1)
     body.point_force((0.0, 2 * R), 1, -P / 2)
     nit, converged = body.solve(1e-8 * P)
     exact = gf.MeshIm(mesh, 6)
@@ -66,7 +73,8 @@ def solve(gf, msh, multiplier):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--level", type=int, required=True)
-    parser.add_argument("--multiplier", choices=("P0", "P1"), required=True)
+    parser.add_argument("--multiplier", choices=("P0", "P1", "P1-lumped"),
+                        required=True)
     args = parser.parse_args()
     hc = level_size(args.level)
     with tempfile.TemporaryDirectory(prefix="getfem_weak_") as tmp:
