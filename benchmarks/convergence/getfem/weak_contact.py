@@ -12,7 +12,7 @@ on the candidate faces, instead of hertz.py's nodal brick:
              nodal brick with the tributary lengths as weights.
 It tells whether the small a_m error of the nodal brick on the coarse
 levels comes from its nodal conditions or from the degree of its
-multipliers (README.md, "What does not close the remaining gaps").
+multipliers (README.md, "What closes the remaining gaps, and what does not").
 
 The pressure p = -lambda_n acts along the obstacle's normal y (the
 resultant is the load). a_m = 2 (int p x^2 ds / int p ds)^(1/2) over the
