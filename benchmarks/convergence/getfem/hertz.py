@@ -97,6 +97,13 @@ def level_size(level):
     return (math.pi * R / 4) / 2 ** (level + 5)
 
 
+def level_mesh(body, level, rho, tmp):
+    """The gmsh mesh of body at a level: h_c within rho of the contact
+    point, growing to 32 h_c (at most R/4) (the module's docstring)."""
+    hc = level_size(level)
+    return hertz_mesh(body, R, hc, min(32 * hc, R / 4), rho, tmp)
+
+
 def solve(gf, msh, ratio, args):
     """Builds and solves the model; returns the body and its record."""
     mesh = cylinder(gf, msh[0], 15 if ratio is None else
@@ -160,10 +167,10 @@ def main():
     rho = 14.0 if args.ratio is None else 21.0 if args.cavity else 17.0
     with tempfile.TemporaryDirectory(prefix="getfem_hertz_") as tmp:
         start = time.perf_counter()
-        msh = [hertz_mesh(args.body, R, hc, min(32 * hc, R / 4), rho, tmp)]
+        msh = [level_mesh(args.body, args.level, rho, tmp)]
         if args.ratio is not None:
-            msh.append(hertz_mesh("cavity" if args.cavity else "block", R,
-                                  hc, min(32 * hc, R / 4), rho, tmp))
+            msh.append(level_mesh("cavity" if args.cavity else "block",
+                                  args.level, rho, tmp))
         meshing = time.perf_counter() - start
         import getfem as gf
         start = time.perf_counter()

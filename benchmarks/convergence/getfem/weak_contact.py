@@ -33,8 +33,7 @@ import time
 import numpy as np
 
 from contact_model import ElasticBody, emit
-from hertz import AXIS, CONTACT, E, NU, P, R, cylinder, level_size
-from mesh import hertz_mesh
+from hertz import AXIS, CONTACT, E, NU, P, R, cylinder, level_mesh
 
 
 def solve(gf, msh, multiplier):
@@ -76,9 +75,8 @@ def main():
     parser.add_argument("--multiplier", choices=("P0", "P1", "P1-lumped"),
                         required=True)
     args = parser.parse_args()
-    hc = level_size(args.level)
     with tempfile.TemporaryDirectory(prefix="getfem_weak_") as tmp:
-        msh = hertz_mesh("circle", R, hc, min(32 * hc, R / 4), 14.0, tmp)
+        msh = level_mesh("circle", args.level, 14.0, tmp)
         import getfem as gf
         start = time.perf_counter()
         record = solve(gf, msh, args.multiplier)
