@@ -209,10 +209,12 @@ namespace dpana
       const std::string python = "/usr/bin/python3";
       if (!std::filesystem::exists(script))
         return "no plot: " + script + " not found";
-      const int status =
+      // The script's exit status without matplotlib (NO_MATPLOTLIB there).
+      constexpr int no_matplotlib = 3;
+      const int     status =
         std::system((python + " " + script + " " + csv + " " + png).c_str());
-      // The script's exit status 3: no matplotlib.
-      if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 3)
+      if (status != -1 && WIFEXITED(status) &&
+          WEXITSTATUS(status) == no_matplotlib)
         return "no plot: " + python + " has no matplotlib";
       if (status != 0)
         return "the plot script failed";

@@ -26,6 +26,12 @@ namespace dpana
   {
     namespace
     {
+      // The table of the contact elements in an output directory, which
+      // write_contact_output() writes and the plot reads.
+      const std::string contact_csv = "/contact.csv";
+
+
+
       // Whether the VTU output of the bodies is written in per-rank pieces.
       bool
       writes_in_pieces(const parallel::Route route)
@@ -420,7 +426,7 @@ namespace dpana
             if (output_parameters.plot)
               plot = std::async(std::launch::async,
                                 output::plot_contact,
-                                staging + "/contact.csv",
+                                staging + contact_csv,
                                 staging + "/contact.png");
           }
         if (output_parameters.write_vtu &&
@@ -448,8 +454,9 @@ namespace dpana
       output::write_contact_surface_vtu(*surfaces[0],
                                         summary_,
                                         directory + "/contact_surface.vtu");
-      const std::string csv = directory + "/contact.csv";
-      output::write_contact_csv(*surfaces[0], summary_, csv);
+      output::write_contact_csv(*surfaces[0],
+                                summary_,
+                                directory + contact_csv);
       if (output_parameters.write_fclib)
         {
           // The condensed problem, for other contact solvers.
