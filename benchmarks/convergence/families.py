@@ -372,4 +372,30 @@ FAMILIES.append(Family(
     note="Two equal spheres R = 40, P = 300 kN, frictionless, on nested "
          "meshes (make_sphere.py --level -2 --refine k)"))
 
+# The 2D Hertz scenes on the rigid plane with patches around the vertices
+# of the candidate surface (Contact / Contact elements = vertices: as many
+# tractions as surface vertices) instead of groups of two edges: the same
+# scenes and meshes, one entry more at every level. GetFEM's records of a
+# variant are those of its scene (getfem/sweep.py).
+VERTICES = {"Contact/Contact elements": "vertices"}
+VERTEX_VARIANTS = ("hertz_rigid_mu0", "hertz_rigid_mu1",
+                   "hertz_rigid_mu0_graded", "hertz_rigid_mu1_graded",
+                   "hertz_rigid_mu0_r10", "hertz_rigid_mu0_d_shaped")
+
+
+def vertex_variant(f):
+    """Family f with patches around the vertices, named f.name + '_vertices'.
+    """
+    def patched(levels):
+        return [(h, {**e, **VERTICES}) for h, e in levels]
+    return Family(f.name + "_vertices", f.prm, f.dim, patched(f.levels),
+                  patched(f.full), f.quantities, f.plot, dict(f.exact),
+                  f.hertz, f.uniform,
+                  f.note + "; patches around the vertices",
+                  dict(f.exact_label))
+
+
+FAMILIES += [vertex_variant(f) for f in list(FAMILIES)
+             if f.name in VERTEX_VARIANTS]
+
 BY_NAME = {f.name: f for f in FAMILIES}

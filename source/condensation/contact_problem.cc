@@ -3,6 +3,8 @@
 // ---------------------------------------------------------------------------
 #include <dpana/condensation/contact_problem.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 
 namespace dpana
@@ -59,6 +61,80 @@ namespace dpana
 
 
 
+    // @sect3{Patches on symmetry lines}
+    //
+    // The vertex of a patch is the corner of its first piece at which the
+    // barycentric coordinate is 1 (group_around_vertices()). Its
+    // displacement along tau is held if the components held to zero by
+    // constraints without entries span tau.
+    template <int dim>
+    std::vector<unsigned int>
+    tangentially_held_patches(
+      const Body<dim>                            &body,
+      const contact_surface::ContactSurface<dim> &surface)
+    {
+      using contact_surface::ElementShape;
+      if (surface.options().shape != ElementShape::vertex_patches)
+        return {};
+      const auto               &constraints = body.constraints();
+      const auto               &faces       = surface.get_faces();
+      std::vector<unsigned int> held(surface.n_elements(), 0);
+      for (unsigned int j = 0; j < surface.n_elements(); ++j)
+        {
+          const auto  &e     = surface.element(j);
+          const auto  &piece = e.pieces[0];
+          const auto  &F     = faces[piece.face];
+          unsigned int v     = 0;
+          while (v < dim && piece.corners[0][v] != 1.0)
+            ++v;
+          Assert(v < dim, dealii::ExcInternalError());
+          for (unsigned int k = 0; k + 1 < dim; ++k)
+            {
+              double spanned = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const auto  dof    = F.dofs[dim * v + c];
+                  const auto &stored = constraints.get_local_lines();
+                  if ((stored.size() == 0 || stored.is_element(dof)) &&
+                      constraints.is_constrained(dof) &&
+                      !constraints.is_inhomogeneously_constrained(dof) &&
+                      constraints.get_constraint_entries(dof)->empty())
+                    spanned += e.tangents[k][c] * e.tangents[k][c];
+                }
+              if (spanned > 1 - 1e-12)
+                held[j] = 1;
+            }
+        }
+      std::vector<unsigned int> any(held.size());
+      dealii::Utilities::MPI::max(held, body.communicator(), any);
+      std::vector<unsigned int> list;
+      for (unsigned int j = 0; j < any.size(); ++j)
+        if (any[j] != 0)
+          list.push_back(j);
+      return list;
+    }
+
+
+
+    void
+    hold_tangential_tractions(contact::ContactProblem         &problem,
+                              const std::vector<unsigned int> &elements)
+    {
+      const unsigned int d = problem.dim;
+      for (const unsigned int j : elements)
+        for (unsigned int k = 1; k < d; ++k)
+          {
+            const unsigned int t        = d * j + k;
+            const double       diagonal = problem.A(t, t);
+            problem.A.row(t).setZero();
+            problem.A.col(t).setZero();
+            problem.A(t, t) = diagonal;
+            problem.D(t)    = 0;
+          }
+    }
+
+
+
     template <int dim>
     double
     largest_asymmetry(const std::vector<const Condenser<dim> *> &condensers)
@@ -83,6 +159,12 @@ namespace dpana
                              const double,
                              const contact::ConeModel,
                              const unsigned int);
+    template std::vector<unsigned int>
+    tangentially_held_patches(const Body<2> &,
+                              const contact_surface::ContactSurface<2> &);
+    template std::vector<unsigned int>
+    tangentially_held_patches(const Body<3> &,
+                              const contact_surface::ContactSurface<3> &);
     template double
     largest_asymmetry(const std::vector<const Condenser<2> *> &);
     template double

@@ -52,6 +52,63 @@ namespace dpana
 
 
 
+    // @sect3{Pieces of faces}
+    //
+    // The rows of the corner matrix sum to one, so its determinant is the
+    // ratio of the piece's area to the face's.
+    template <int dim>
+    double
+    FacePiece<dim>::fraction() const
+    {
+      const auto &c = corners;
+      if constexpr (dim == 2)
+        return std::abs(c[0][0] * c[1][1] - c[0][1] * c[1][0]);
+      else
+        return std::abs(c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1]) -
+                        c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0]) +
+                        c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0]));
+    }
+
+
+
+    template <int dim>
+    dealii::Point<dim>
+    FacePiece<dim>::point(const Face<dim>               &F,
+                          const std::array<double, dim> &lambda)
+    {
+      dealii::Point<dim> x;
+      for (unsigned int v = 0; v < dim; ++v)
+        x += lambda[v] * F.points[v];
+      return x;
+    }
+
+
+
+    template <int dim>
+    std::array<dealii::Point<dim>, dim>
+    FacePiece<dim>::corner_points(const Face<dim> &F) const
+    {
+      std::array<dealii::Point<dim>, dim> x;
+      for (unsigned int k = 0; k < dim; ++k)
+        x[k] = point(F, corners[k]);
+      return x;
+    }
+
+
+
+    template <int dim>
+    std::array<double, dim>
+    FacePiece<dim>::centroid() const
+    {
+      std::array<double, dim> lambda{};
+      for (unsigned int k = 0; k < dim; ++k)
+        for (unsigned int v = 0; v < dim; ++v)
+          lambda[v] += corners[k][v] / dim;
+      return lambda;
+    }
+
+
+
     template <int dim>
     void
     ContactSurface<dim>::build(const dealii::DoFHandler<dim> &dofs,
@@ -100,24 +157,38 @@ namespace dpana
             "' faces away from the contact direction; reduce the candidate "
             "region (parameter Contact / Candidate half width)");
       tau_surface = tangential_frame(n_surface);
-      group_faces();
+      if (opts.shape == ElementShape::vertex_patches)
+        group_around_vertices();
+      else
+        group_faces();
       finish_elements();
     }
 
 
 
     // Frame, projected area, quadrature points, centroid and tangential
-    // extents of every element. The frame comes first: the weight of a face
-    // is its area projected on the plane normal to n, |F| (n_F . n).
+    // extents of every element. The frame comes first: the weight of a piece
+    // of face is its area projected on the plane normal to n,
+    // |piece| (n_F . n). Groups of faces get one piece per face; patches
+    // around vertices made their pieces already.
     template <int dim>
     void
     ContactSurface<dim>::finish_elements()
     {
       for (auto &e : elements)
         {
+          if (e.pieces.empty())
+            for (const unsigned int f : e.faces)
+              {
+                FacePiece<dim> whole{f, {}};
+                for (unsigned int v = 0; v < dim; ++v)
+                  whole.corners[v][v] = 1;
+                e.pieces.push_back(whole);
+              }
           dealii::Tensor<1, dim> n;
-          for (const unsigned int f : e.faces)
-            n += faces[f].area * faces[f].normal;
+          for (const auto &piece : e.pieces)
+            n += piece.fraction() * faces[piece.face].area *
+                 faces[piece.face].normal;
           e.normal   = opts.direction.norm() > 0 ? n_surface : n / n.norm();
           e.tangents = tangential_frame(e.normal);
 
@@ -127,9 +198,9 @@ namespace dpana
           e.s_min = e.t_min = std::numeric_limits<double>::max();
           e.s_max = e.t_max = -std::numeric_limits<double>::max();
           e.at_open_edge    = false;
-          for (const unsigned int f : e.faces)
+          for (const auto &piece : e.pieces)
             {
-              const auto  &F = faces[f];
+              const auto  &F = faces[piece.face];
               const double c = F.normal * e.normal;
               if (!(c > 1e-3))
                 throw InputError(
@@ -140,23 +211,26 @@ namespace dpana
                   "Contact / Faces per contact element) or a smaller candidate "
                   "region");
               SurfacePoint<dim> p;
-              p.face = f;
-              p.barycentric.fill(1.0 / dim);
-              p.x      = F.centroid;
-              p.weight = F.area * c;
+              p.face        = piece.face;
+              p.barycentric = piece.centroid();
+              p.x           = FacePiece<dim>::point(F, p.barycentric);
+              p.weight      = piece.fraction() * F.area * c;
               e.points.push_back(p);
               e.area += p.weight;
-              e.centroid += p.weight * F.centroid;
-              for (const auto &x : F.points)
+              e.centroid += p.weight * p.x;
+              for (const auto &x : piece.corner_points(F))
                 {
                   e.s_min = std::min(e.s_min, x * tau_surface[0]);
                   e.s_max = std::max(e.s_max, x * tau_surface[0]);
                   e.t_min = std::min(e.t_min, x * tau_surface[dim - 2]);
                   e.t_max = std::max(e.t_max, x * tau_surface[dim - 2]);
                 }
-              for (const unsigned int v : F.vertices)
-                if (excluded_vertices.count(v))
-                  e.at_open_edge = true;
+              // The corners at vertices of the face: is one of them also a
+              // vertex of a face left out of the candidate surface?
+              for (const auto &lambda : piece.corners)
+                for (unsigned int v = 0; v < dim; ++v)
+                  if (lambda[v] == 1 && excluded_vertices.count(F.vertices[v]))
+                    e.at_open_edge = true;
             }
           e.centroid /= e.area;
           e.s = e.centroid * tau_surface[0];
@@ -172,7 +246,7 @@ namespace dpana
     // @sect3{The gap to a rigid plane}
     //
     // The gap is linear on each face, so the rule of the element (one point
-    // at each face's centroid) integrates it exactly.
+    // at the centroid of each piece of face) integrates it exactly.
     template <int dim>
     void
     ContactSurface<dim>::set_plane_gap(const dealii::Point<dim> &point)
@@ -251,6 +325,8 @@ namespace dpana
 
 
 
+    template struct FacePiece<2>;
+    template struct FacePiece<3>;
     template class ContactSurface<2>;
     template class ContactSurface<3>;
   } // namespace contact_surface

@@ -69,6 +69,54 @@ namespace dpana
 
 
 
+    // @sect3{Patches around the vertices}
+    //
+    // 2D: every vertex of the candidate edges carries one element, made of
+    // the halves of the (one or two) candidate edges next to it. The half
+    // of edge f next to its vertex k has the corners e_k and (1/2, 1/2) in
+    // the barycentric coordinates of f. The elements are numbered along the
+    // surface (by the tangential coordinate of their vertex).
+    template <int dim>
+    void
+    ContactSurface<dim>::group_around_vertices()
+    {
+      Assert(dim == 2, dealii::ExcNotImplemented());
+      std::map<unsigned int, unsigned int> element_of_vertex;
+      std::vector<double>                  s_vertex;
+      elements.clear();
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            const auto [it, is_new] =
+              element_of_vertex.emplace(faces[f].vertices[k], elements.size());
+            if (is_new)
+              {
+                elements.emplace_back();
+                s_vertex.push_back(faces[f].points[k] * tau_surface[0]);
+              }
+            FacePiece<dim> half{f, {}};
+            half.corners[0][k] = 1;
+            half.corners[1].fill(1.0 / dim);
+            auto &e = elements[it->second];
+            e.faces.push_back(f);
+            e.pieces.push_back(half);
+          }
+
+      std::vector<unsigned int> order(elements.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(),
+                order.end(),
+                [&](const unsigned int a, const unsigned int b) {
+                  return s_vertex[a] < s_vertex[b];
+                });
+      std::vector<ContactElement<dim>> sorted;
+      for (const unsigned int j : order)
+        sorted.push_back(std::move(elements[j]));
+      elements = std::move(sorted);
+    }
+
+
+
     // A structured surface: every vertex lies on one of the lines
     // s = s_i, t = t_j of a tangential lattice, every face lies inside one
     // lattice cell and every cell holds exactly two faces (a quadrilateral
@@ -300,5 +348,9 @@ namespace dpana
     ContactSurface<2>::group_faces();
     template void
     ContactSurface<3>::group_faces();
+    template void
+    ContactSurface<2>::group_around_vertices();
+    template void
+    ContactSurface<3>::group_around_vertices();
   } // namespace contact_surface
 } // namespace dpana

@@ -24,17 +24,17 @@ namespace dpana
     //
     // A mortar projection along the normal n of each contact element, in
     // the coordinates c = (x . tau_1, ..., x . tau_{dim-1}) of its tangent
-    // plane. The projection of a face f of the first body and that of a
-    // face g of the second overlap in a convex set: an interval in 2D, a
-    // polygon in 3D (the triangle of g clipped by that of f, cut into a fan
-    // of triangles). On each piece both faces are flat, so the shape
-    // functions of both bodies and the gap (x_2 - x_1) . n are linear in c
-    // there, and the centroid rule with the piece's measure as weight
-    // integrates them exactly. The pieces of f add up to the projected
-    // measure of f, its weight on the first body's side, so the forces on
-    // the two sides balance. Each face of the first body must be covered
-    // exactly once: otherwise the first body's candidate surface reaches
-    // beyond the second body's, or the second body's surface folds over
+    // plane. The projection of a face f of the first body (or of the piece
+    // of f that the element holds) and that of a face g of the second
+    // overlap in a convex set: an interval in 2D, a polygon in 3D (the
+    // triangle of g clipped by that of f, cut into a fan of triangles). On each
+    // piece both faces are flat, so the shape functions of both bodies and the
+    // gap (x_2 - x_1) . n are linear in c there, and the centroid rule with the
+    // piece's measure as weight integrates them exactly. The pieces of f add up
+    // to the projected measure of f, its weight on the first body's side, so
+    // the forces on the two sides balance. Each face of the first body must be
+    // covered exactly once: otherwise the first body's candidate surface
+    // reaches beyond the second body's, or the second body's surface folds over
     // itself along n. Matching meshes are the special case where every
     // face is covered by one partner.
     namespace
@@ -263,6 +263,21 @@ namespace dpana
 
 
 
+      // The piece of a face of the first body as a flat face of its own
+      // (its corners and centroid), to be projected like a face.
+      template <int dim>
+      Face<dim>
+      piece_as_face(const Face<dim> &F, const FacePiece<dim> &piece)
+      {
+        Face<dim>  P       = F;
+        const auto corners = piece.corner_points(F);
+        P.points.assign(corners.begin(), corners.end());
+        P.centroid = FacePiece<dim>::point(F, piece.centroid());
+        return P;
+      }
+
+
+
       // Keep only the faces that some element uses, renumbered in the order
       // of their first use.
       template <int dim>
@@ -307,9 +322,10 @@ namespace dpana
             Q.push_back(project(F, e1.tangents));
 
           e.gap_integral = 0;
-          for (const unsigned int f : e1.faces)
+          for (const auto &piece : e1.pieces)
             {
-              const auto         &F1 = first.faces[f];
+              const Face<dim> F1 =
+                piece_as_face(first.faces[piece.face], piece);
               const ProjectedFace P1 = project(F1, e1.tangents);
               const double        m1 = measure<dim>(P1);
               const double        covered =
@@ -375,6 +391,7 @@ namespace dpana
           for (unsigned int k = 0; k < dim - 1; ++k)
             e.tangents[k] = -first.elements[j].tangents[k];
           e.faces.clear();
+          e.pieces.clear();
           e.points.clear();
           e.at_open_edge = first.elements[j].at_open_edge;
         }

@@ -53,6 +53,17 @@ namespace dpana
                         "element gives about twice as many elements as "
                         "surface vertices, and A is then singular (the log "
                         "warns).");
+      prm.declare_entry(
+        "Contact elements",
+        "faces",
+        Selection("faces|vertices"),
+        "The parts of Gamma_c that carry one constant traction. faces: "
+        "groups of Faces per contact element adjacent faces (the reference "
+        "formulation). vertices (2D only, Faces per contact element = 0): "
+        "one element around each vertex of Gamma_c, made of the halves of "
+        "the edges next to it; as many tractions as surface vertices, the "
+        "traction form of nodal contact conditions, more accurate per "
+        "degree of freedom on coarse meshes.");
       prm.declare_entry("Contact direction",
                         "",
                         Anything(),
@@ -83,6 +94,17 @@ namespace dpana
                                      "Contact / Candidate centre");
       region_half_width = prm.get_double("Candidate half width");
       faces_per_element = prm.get_integer("Faces per contact element");
+      shape             = prm.get("Contact elements") == "vertices" ?
+                            ElementShape::vertex_patches :
+                            ElementShape::face_groups;
+      if (shape == ElementShape::vertex_patches && dim != 2)
+        throw InputError("Contact / Contact elements = vertices: only in 2D "
+                         "(use faces in 3D)");
+      if (shape == ElementShape::vertex_patches && faces_per_element != 0)
+        throw InputError("Contact / Faces per contact element = " +
+                         std::to_string(faces_per_element) +
+                         ": must be 0 with Contact elements = vertices (each "
+                         "element is the patch around one vertex)");
 
       const std::string direction_text = trim(prm.get("Contact direction"));
       direction                        = dealii::Tensor<1, dim>();
@@ -133,6 +155,7 @@ namespace dpana
       options.region_centre     = region_centre;
       options.region_half_width = region_half_width;
       options.faces_per_element = faces_per_element;
+      options.shape             = shape;
       options.direction         = b == 0 ? direction : -direction;
       return options;
     }

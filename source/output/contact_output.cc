@@ -64,27 +64,31 @@ namespace dpana
 
     namespace
     {
-      // The faces of the contact surface as a mesh of their own: each face
-      // keeps its own vertices, so that values constant per face show as
-      // such, and its index as the material id of its cell.
+      // The pieces of faces of the contact elements (whole faces, or half
+      // edges around vertices) as a mesh of their own: each piece keeps its
+      // own vertices, so that values constant per element show as such, and
+      // the index of its element as the material id of its cell.
       template <int dim>
       void
-      make_face_mesh(const contact_surface::ContactSurface<dim> &surface,
-                     dealii::Triangulation<dim - 1, dim>        &tria)
+      make_piece_mesh(const contact_surface::ContactSurface<dim> &surface,
+                      dealii::Triangulation<dim - 1, dim>        &tria)
       {
         std::vector<dealii::Point<dim>>        vertices;
         std::vector<dealii::CellData<dim - 1>> cells;
-        for (const auto &face : surface.get_faces())
-          {
-            dealii::CellData<dim - 1> cell(face.points.size());
-            cell.material_id = cells.size();
-            for (unsigned int v = 0; v < face.points.size(); ++v)
-              {
-                cell.vertices[v] = vertices.size();
-                vertices.push_back(face.points[v]);
-              }
-            cells.push_back(cell);
-          }
+        for (unsigned int j = 0; j < surface.n_elements(); ++j)
+          for (const auto &piece : surface.element(j).pieces)
+            {
+              dealii::CellData<dim - 1> cell(dim);
+              cell.material_id = j;
+              const auto corners =
+                piece.corner_points(surface.get_faces()[piece.face]);
+              for (unsigned int v = 0; v < dim; ++v)
+                {
+                  cell.vertices[v] = vertices.size();
+                  vertices.push_back(corners[v]);
+                }
+              cells.push_back(cell);
+            }
         tria.create_triangulation(vertices, cells, dealii::SubCellData());
       }
 
@@ -163,13 +167,8 @@ namespace dpana
           });
         }
 
-      std::vector<unsigned int> element_of_face(surface.get_faces().size());
-      for (unsigned int j = 0; j < surface.n_elements(); ++j)
-        for (const unsigned int f : surface.element(j).faces)
-          element_of_face[f] = j;
-
       dealii::Triangulation<dim - 1, dim> tria;
-      make_face_mesh(surface, tria);
+      make_piece_mesh(surface, tria);
       const dealii::FESystem<dim - 1, dim> fe(*constant_element<dim>(),
                                               names.size());
       dealii::DoFHandler<dim - 1, dim>     dof_handler(tria);
@@ -178,7 +177,7 @@ namespace dpana
       std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          const unsigned int j = element_of_face[cell->material_id()];
+          const unsigned int j = cell->material_id();
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             data[dofs[i]] = value[fe.system_to_component_index(i).first](j);

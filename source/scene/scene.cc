@@ -14,6 +14,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -237,20 +238,26 @@ namespace dpana
         const auto phase = phase_log.phase("contact surface");
         make_surfaces();
       }
-      if (!quiet)
-        for (const auto &s : surfaces)
-          {
-            std::cout << "        Candidate contact surface: "
-                      << s->description() << std::endl;
-            if (s->n_elements() > s->n_vertices())
-              std::cout << "        warning: " << s->n_elements()
-                        << " contact elements on " << s->n_vertices()
-                        << " surface vertices: more normal tractions than "
-                           "the surface can resist; A is singular and the "
-                           "tractions may oscillate (raise Contact / Faces "
-                           "per contact element)"
-                        << std::endl;
-          }
+      if (quiet)
+        return;
+      // A = sum_b V_b^T K_b^-1 V_b is singular only if no body's surface
+      // has as many vertices as there are contact elements (each V_b then
+      // lacks full column rank).
+      unsigned int most_vertices = 0;
+      for (const auto &s : surfaces)
+        {
+          std::cout << "        Candidate contact surface: " << s->description()
+                    << std::endl;
+          most_vertices = std::max(most_vertices, s->n_vertices());
+        }
+      if (surfaces[0]->n_elements() > most_vertices)
+        std::cout << "        warning: " << surfaces[0]->n_elements()
+                  << " contact elements on " << most_vertices
+                  << " surface vertices: more normal tractions than "
+                     "the surface can resist; A is singular and the "
+                     "tractions may oscillate (raise Contact / Faces "
+                     "per contact element)"
+                  << std::endl;
     }
 
 

@@ -52,6 +52,40 @@ namespace dpana
       const unsigned int                          polygon_sides);
 
     /**
+     * Patches around the vertices (ContactSurface with
+     * ElementShape::vertex_patches): the elements whose vertex has its
+     * displacement along the element's tangent held to zero by a
+     * constraint of @p body (Body 1), that is a vertex on a symmetry line
+     * across the surface (the axis of a half model) or a fixed vertex. In
+     * the mirrored whole model such a patch is the half of one that
+     * straddles the symmetry line, where the tangential traction is odd: its
+     * constant tangential traction is zero. In the half model it acts only
+     * through the neighbouring vertex, together with that vertex's own
+     * patch, and is left undetermined (the friction solver would put it on
+     * the edge of the friction set and its neighbour opposite);
+     * hold_tangential_tractions() holds it at zero. Empty for groups of
+     * faces. On several ranks every rank returns the same list (each knows
+     * the constraints of its own dofs).
+     */
+    template <int dim>
+    std::vector<unsigned int>
+    tangentially_held_patches(
+      const Body<dim>                            &body,
+      const contact_surface::ContactSurface<dim> &surface);
+
+    /**
+     * Hold the tangential tractions of the elements @p elements of
+     * @p problem at zero: their rows and columns of A are cleared but for
+     * the diagonal, and their rows of D. The tangential displacement of
+     * such an element is then u_T = A_TT T, which the Coulomb law allows
+     * only with T = 0 and u_T = 0 (stick while in contact), and the other
+     * unknowns solve the problem without these tractions.
+     */
+    void
+    hold_tangential_tractions(contact::ContactProblem         &problem,
+                              const std::vector<unsigned int> &elements);
+
+    /**
      * The largest relative asymmetry ||A_b - A_b^T||_F / ||A_b||_F of the
      * compliance matrices of @p condensers before their symmetrisation
      * (Condenser::asymmetry()): a check of the blocked solves, near machine

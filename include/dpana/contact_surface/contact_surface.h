@@ -70,6 +70,54 @@ namespace dpana
     };
 
     /**
+     * The part of a face that belongs to a contact element: a simplex
+     * inside the face, given by the barycentric coordinates of its corners
+     * with respect to the face's vertices (corner k is sum_v corners[k][v]
+     * times vertex v). A whole face has the unit corners; in 2D the half of
+     * an edge next to its vertex v has the corners e_v and (1/2, 1/2).
+     */
+    template <int dim>
+    struct FacePiece
+    {
+      unsigned int                             face;
+      std::array<std::array<double, dim>, dim> corners;
+
+      /**
+       * The piece's share of the face's area: |det(corners)|.
+       */
+      double
+      fraction() const;
+
+      /**
+       * The point of @p F at the barycentric coordinates @p lambda.
+       */
+      static dealii::Point<dim>
+      point(const Face<dim> &F, const std::array<double, dim> &lambda);
+
+      /**
+       * The corners of the piece on its face @p F.
+       */
+      std::array<dealii::Point<dim>, dim>
+      corner_points(const Face<dim> &F) const;
+
+      /**
+       * The barycentric coordinates of the piece's centroid in its face.
+       */
+      std::array<double, dim>
+      centroid() const;
+    };
+
+    /**
+     * The shape of the contact elements: groups of whole faces, or (2D)
+     * one element around each vertex of the candidate surface.
+     */
+    enum class ElementShape
+    {
+      face_groups,
+      vertex_patches
+    };
+
+    /**
      * A contact element: a group of adjacent faces that carries one
      * piecewise constant traction (N, T) in its local frame.
      *
@@ -84,6 +132,9 @@ namespace dpana
      *   so that the forces on two paired surfaces balance exactly even when
      *   one is curved (the cylinder) and the other flat (the foundation);
      *   on a flat element it is the plain area.
+     * - pieces: the parts of faces the element covers on the first body
+     *   (whole faces for groups of faces, half edges for vertex patches);
+     *   faces lists the faces they lie on.
      * - points: the quadrature rule of this body's side of the element; the
      *   weights add up to area.
      * - gap_integral: the integral over the element of the initial gap
@@ -97,6 +148,7 @@ namespace dpana
     struct ContactElement
     {
       std::vector<unsigned int>                   faces;
+      std::vector<FacePiece<dim>>                 pieces;
       std::vector<SurfacePoint<dim>>              points;
       dealii::Tensor<1, dim>                      normal;
       std::array<dealii::Tensor<1, dim>, dim - 1> tangents;
@@ -148,6 +200,19 @@ namespace dpana
      * leftover of one or two triangles would carry a mean traction over a
      * much smaller area than its neighbours and stand out of the profile.
      *
+     * <h3>Patches around the vertices (2D)</h3>
+     *
+     * With the shape ElementShape::vertex_patches (parameter Contact /
+     * Contact elements = vertices) each vertex of the candidate surface
+     * carries one contact element: the halves of the candidate edges next
+     * to it, from the vertex to their midpoints (the dual cell of the
+     * vertex on the surface). There are then as many constant tractions
+     * as surface vertices, the traction form of the nodal contact
+     * conditions of displacement-based contact codes. The element's
+     * quadrature points are the midpoints of its half edges, where the P1
+     * shape functions of the edge are 3/4 and 1/4 (exact for the linear
+     * integrand).
+     *
      * <h3>Frames and gaps</h3>
      *
      * If a contact direction is given (the normal of the tangent plane at
@@ -195,6 +260,8 @@ namespace dpana
         double             region_half_width = 0;
         // Faces per contact element (0: 2 in 2D, 8 in 3D).
         unsigned int faces_per_element = 0;
+        // Groups of faces, or one patch around each vertex (2D).
+        ElementShape shape = ElementShape::face_groups;
         // Contact direction (zero: the element's mean outward normal).
         dealii::Tensor<1, dim> direction;
       };
@@ -324,6 +391,8 @@ namespace dpana
                     const MPI_Comm                 communicator);
       void
       group_faces();
+      void
+      group_around_vertices();
       bool
       group_on_lattice(const unsigned int q);
       void

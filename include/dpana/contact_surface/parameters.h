@@ -32,6 +32,7 @@ namespace dpana
      *       set Candidate centre          = 0, 0
      *       set Candidate half width      = 15
      *       set Faces per contact element = 0
+     *       set Contact elements          = faces
      *       set Contact direction         = 0, -1
      *       set Obstacle point            =
      *     end
@@ -56,6 +57,8 @@ namespace dpana
       double             region_half_width = 0;
       // Faces per contact element (0: 2 edges in 2D, 8 triangles in 3D).
       unsigned int faces_per_element = 0;
+      // Groups of faces, or patches around the vertices (2D).
+      ElementShape shape = ElementShape::face_groups;
       // The contact direction n, out of Body 1 (zero: not given, the
       // element normals).
       dealii::Tensor<1, dim> direction;
@@ -65,8 +68,9 @@ namespace dpana
 
       /**
        * Declare the entries Boundary 1, Boundary 2, Candidate centre,
-       * Candidate half width, Faces per contact element, Contact direction
-       * and Obstacle point, with their defaults and help texts, in the
+       * Candidate half width, Faces per contact element, Contact elements,
+       * Contact direction and Obstacle point, with their defaults and help
+       * texts, in the
        * current subsection of @p prm.
        */
       static void
@@ -76,8 +80,9 @@ namespace dpana
        * Read the entries declared by declare_parameters() from the current
        * subsection of @p prm. Throws dpana::InputError with a one-line
        * message naming the entry ("Contact / Contact direction: ...") for a
-       * point or vector without exactly dim finite coordinates, and for a
-       * zero contact direction.
+       * point or vector without exactly dim finite coordinates, for a
+       * zero contact direction, and for Contact elements = vertices in 3D
+       * or with a nonzero Faces per contact element.
        */
       void
       parse_parameters(dealii::ParameterHandler &prm);
@@ -86,8 +91,9 @@ namespace dpana
        * The options of the candidate surface of body @p b (0: Body 1,
        * 1: Body 2) named @p body, whose mesh carries the boundaries
        * @p boundary_names: the boundary id of Boundary b+1, the candidate
-       * region, the faces per element, and the contact direction (negated
-       * for Body 2, whose normal points towards Body 1). Throws
+       * region, the faces per element and the shape of the elements, and
+       * the contact direction (negated for Body 2, whose normal points
+       * towards Body 1). Throws
        * dpana::InputError if the body has no boundary of that name.
        */
       typename ContactSurface<dim>::Options
