@@ -1,7 +1,9 @@
 // ---------------------------------------------------------------------------
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
+#include <dpana/base/exceptions.h>
 #include <dpana/condensation/contact_problem.h>
+#include <dpana/contact_surface/format_point.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -64,9 +66,13 @@ namespace dpana
     // @sect3{Patches on symmetry lines}
     //
     // The vertex of a patch is the corner of its first piece at which the
-    // barycentric coordinate is 1 (group_around_vertices()). Its
-    // displacement along tau is held if the components held to zero by
-    // constraints without entries span tau.
+    // barycentric coordinate is 1 (group_around_vertices()). A component c
+    // of its displacement is held if a constraint without entries sets it
+    // to zero. The tangential displacement counts as held if the held
+    // components make up more than half of tau (tau_c^2 > 1/2): with the
+    // elements' own normals the half edge at the axis is tilted by half
+    // its angle on the arc, and its tangent is not exactly the held
+    // direction.
     template <int dim>
     std::vector<unsigned int>
     tangentially_held_patches(
@@ -76,8 +82,15 @@ namespace dpana
       using contact_surface::ElementShape;
       if (surface.options().shape != ElementShape::vertex_patches)
         return {};
-      const auto               &constraints = body.constraints();
-      const auto               &faces       = surface.get_faces();
+      const auto &constraints  = body.constraints();
+      const auto &stored       = constraints.get_local_lines();
+      const auto  held_to_zero = [&](const dealii::types::global_dof_index i) {
+        return (stored.size() == 0 || stored.is_element(i)) &&
+               constraints.is_constrained(i) &&
+               !constraints.is_inhomogeneously_constrained(i) &&
+               constraints.get_constraint_entries(i)->empty();
+      };
+      const auto               &faces = surface.get_faces();
       std::vector<unsigned int> held(surface.n_elements(), 0);
       for (unsigned int j = 0; j < surface.n_elements(); ++j)
         {
@@ -87,24 +100,28 @@ namespace dpana
           unsigned int v     = 0;
           while (v < dim && piece.corners[0][v] != 1.0)
             ++v;
-          Assert(v < dim, dealii::ExcInternalError());
-          for (unsigned int k = 0; k + 1 < dim; ++k)
-            {
-              double spanned = 0;
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const auto  dof    = F.dofs[dim * v + c];
-                  const auto &stored = constraints.get_local_lines();
-                  if ((stored.size() == 0 || stored.is_element(dof)) &&
-                      constraints.is_constrained(dof) &&
-                      !constraints.is_inhomogeneously_constrained(dof) &&
-                      constraints.get_constraint_entries(dof)->empty())
-                    spanned += e.tangents[k][c] * e.tangents[k][c];
-                }
-              if (spanned > 1 - 1e-12)
-                held[j] = 1;
-            }
+          AssertThrow(v < dim, dealii::ExcInternalError());
+          unsigned int n_held = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            if (held_to_zero(F.dofs[dim * v + c]))
+              {
+                ++n_held;
+                for (unsigned int k = 0; k + 1 < dim; ++k)
+                  if (e.tangents[k][c] * e.tangents[k][c] > 0.5)
+                    held[j] = 1;
+              }
+          if (n_held == dim)
+            throw InputError(
+              "Contact / Contact elements = vertices: the vertex at " +
+              contact_surface::internal::format_point(F.points[v]) +
+              " of the candidate surface of " + surface.options().body +
+              " is held in every direction, so no free displacement resists "
+              "the tractions of its patch (leave it out of the candidate "
+              "region, or use Contact elements = faces)");
         }
+      // Every rank holds the constraints of the whole body (Body::
+      // constraints()), so every rank finds the same list; the maximum over
+      // the ranks keeps it so should a rank hold only those of its dofs.
       std::vector<unsigned int> any(held.size());
       dealii::Utilities::MPI::max(held, body.communicator(), any);
       std::vector<unsigned int> list;
@@ -130,6 +147,8 @@ namespace dpana
             problem.A.col(t).setZero();
             problem.A(t, t) = diagonal;
             problem.D(t)    = 0;
+            if (problem.G.rows() > 0)
+              problem.G.col(t).setZero();
           }
     }
 

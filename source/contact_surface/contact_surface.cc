@@ -207,9 +207,12 @@ namespace dpana
                   opts.body + ": the candidate face at " +
                   internal::format_point(F.centroid) + " of '" + opts.boundary +
                   "' is nearly parallel to the normal of its contact "
-                  "element; use smaller contact elements (parameter "
-                  "Contact / Faces per contact element) or a smaller candidate "
-                  "region");
+                  "element; use " +
+                  (opts.shape == ElementShape::vertex_patches ?
+                     std::string() :
+                     "smaller contact elements (parameter Contact / Faces per "
+                     "contact element) or ") +
+                  "a smaller candidate region");
               SurfacePoint<dim> p;
               p.face        = piece.face;
               p.barycentric = piece.centroid();

@@ -80,7 +80,7 @@ namespace dpana
     void
     ContactSurface<dim>::group_around_vertices()
     {
-      Assert(dim == 2, dealii::ExcNotImplemented());
+      AssertThrow(dim == 2, dealii::ExcNotImplemented());
       std::map<unsigned int, unsigned int> element_of_vertex;
       std::vector<double>                  s_vertex;
       elements.clear();

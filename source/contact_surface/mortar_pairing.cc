@@ -332,7 +332,9 @@ namespace dpana
                 add_overlaps(F1, P1, m1, e1.normal, faces, Q, e);
               if (std::abs(covered - m1) > 1e-9 * m1)
                 throw InputError(
-                  "Contact: the face of " + first.opts.body + " at " +
+                  std::string("Contact: the ") +
+                  (piece.fraction() < 1 ? "half edge" : "face") + " of " +
+                  first.opts.body + " at " +
                   internal::format_point(F1.centroid) + " is " +
                   (covered < m1 ? "not covered by" :
                                   "covered more than once by") +

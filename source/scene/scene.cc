@@ -240,24 +240,28 @@ namespace dpana
       }
       if (quiet)
         return;
-      // A = sum_b V_b^T K_b^-1 V_b is singular only if no body's surface
-      // has as many vertices as there are contact elements (each V_b then
-      // lacks full column rank).
-      unsigned int most_vertices = 0;
+      // A surface with more contact elements than vertices cannot resist
+      // every distribution of normal tractions: its V_b lacks full column
+      // rank. On one body A is then singular; on two, A = A1 + A2 may not
+      // be, but the tractions may still oscillate.
       for (const auto &s : surfaces)
         {
           std::cout << "        Candidate contact surface: " << s->description()
                     << std::endl;
-          most_vertices = std::max(most_vertices, s->n_vertices());
+          if (s->n_elements() > s->n_vertices())
+            std::cout
+              << "        warning: " << s->n_elements()
+              << " contact elements on " << s->n_vertices()
+              << " surface vertices of " << s->options().body
+              << ": more normal tractions than the surface can resist; A "
+                 "may be singular and the tractions may oscillate ("
+              << (s->options().shape ==
+                      contact_surface::ElementShape::vertex_patches ?
+                    "refine the surface of " + s->options().body +
+                      " or use Contact / Contact elements = faces" :
+                    std::string("raise Contact / Faces per contact element"))
+              << ")" << std::endl;
         }
-      if (surfaces[0]->n_elements() > most_vertices)
-        std::cout << "        warning: " << surfaces[0]->n_elements()
-                  << " contact elements on " << most_vertices
-                  << " surface vertices: more normal tractions than "
-                     "the surface can resist; A is singular and the "
-                     "tractions may oscillate (raise Contact / Faces "
-                     "per contact element)"
-                  << std::endl;
     }
 
 

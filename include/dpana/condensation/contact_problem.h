@@ -55,17 +55,18 @@ namespace dpana
      * Patches around the vertices (ContactSurface with
      * ElementShape::vertex_patches): the elements whose vertex has its
      * displacement along the element's tangent held to zero by a
-     * constraint of @p body (Body 1), that is a vertex on a symmetry line
-     * across the surface (the axis of a half model) or a fixed vertex. In
-     * the mirrored whole model such a patch is the half of one that
-     * straddles the symmetry line, where the tangential traction is odd: its
-     * constant tangential traction is zero. In the half model it acts only
-     * through the neighbouring vertex, together with that vertex's own
-     * patch, and is left undetermined (the friction solver would put it on
-     * the edge of the friction set and its neighbour opposite);
+     * constraint of @p body (Body 1): a vertex on a symmetry line across
+     * the surface, the axis of a half model. In the mirrored whole model
+     * such a patch is the half of one that straddles the symmetry line,
+     * where the tangential traction is odd: its constant tangential
+     * traction is zero. In the half model it acts only through the
+     * neighbouring vertex, together with that vertex's own patch, and is
+     * left undetermined (the friction solver would put it on the edge of
+     * the friction set and its neighbour opposite);
      * hold_tangential_tractions() holds it at zero. Empty for groups of
-     * faces. On several ranks every rank returns the same list (each knows
-     * the constraints of its own dofs).
+     * faces. Throws dpana::InputError if a patch's vertex is held in every
+     * direction (a fixed vertex): no free displacement would resist its
+     * tractions, normal ones included.
      */
     template <int dim>
     std::vector<unsigned int>
@@ -76,9 +77,11 @@ namespace dpana
     /**
      * Hold the tangential tractions of the elements @p elements of
      * @p problem at zero: their rows and columns of A are cleared but for
-     * the diagonal, and their rows of D. The tangential displacement of
-     * such an element is then u_T = A_TT T, which the Coulomb law allows
-     * only with T = 0 and u_T = 0 (stick while in contact), and the other
+     * the diagonal, their rows of D and their columns of the equilibrium
+     * rows G (so that the rigid motion of a floating body does not enter
+     * their tangential displacement). The tangential displacement of such
+     * an element is then u_T = A_TT T, which the Coulomb law allows only
+     * with T = 0 and u_T = 0 (stick while in contact), and the other
      * unknowns solve the problem without these tractions.
      */
     void

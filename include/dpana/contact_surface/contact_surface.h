@@ -56,9 +56,10 @@ namespace dpana
      * order of Face::vertices), its position and its weight. The integrand
      * of the coupling operator V is a P1 shape function times a constant
      * traction, linear on each face, and the rules are exact for it: one
-     * point at the centroid of each face (matching surfaces), or one at the
-     * midpoint of each overlap of a face with a face of the other body
-     * (non-matching surfaces in 2D).
+     * point at the centroid of each piece of face of the element (a whole
+     * face, or a half edge, whose midpoint has the barycentric coordinates
+     * 3/4 and 1/4), or one at the centroid of each overlap of such a piece
+     * with a face of the other body (the second body of a pair).
      */
     template <int dim>
     struct SurfacePoint
@@ -118,8 +119,9 @@ namespace dpana
     };
 
     /**
-     * A contact element: a group of adjacent faces that carries one
-     * piecewise constant traction (N, T) in its local frame.
+     * A contact element: a group of adjacent faces, or in 2D the patch
+     * around one vertex, that carries one piecewise constant traction
+     * (N, T) in its local frame.
      *
      * - normal: the direction n along which the normal traction acts and the
      *   normal displacement is measured. It points out of the body, towards
@@ -230,10 +232,10 @@ namespace dpana
      * onto element j (a mortar projection with piecewise constant
      * multipliers on the first body). The two discretisations need not
      * match: the faces of the second body are cut at the edges of the
-     * projections of the first body's faces (intervals in 2D, triangles
-     * clipped by triangles in 3D). A cylinder meshed along its arc can rest
-     * on a foundation meshed on a grid, or in a cavity of another radius;
-     * matching meshes are the special case of one partner per face.
+     * projections of the first body's pieces of faces (intervals in 2D,
+     * triangles clipped by triangles in 3D). A cylinder meshed along its arc
+     * can rest on a foundation meshed on a grid, or in a cavity of another
+     * radius; matching meshes are the special case of one partner per face.
      *
      * <h3>Where the code is</h3>
      *
@@ -283,9 +285,10 @@ namespace dpana
        * those of @p first, with its frame negated, and the gap of @p first is
        * set to the normal distance between the two surfaces. Only the faces
        * of the mesh of @p dofs that face the first body (outward normal . n < 0) take
-       * part, whether or not they lie in the candidate region. Every face of
-       * @p first must be covered exactly once by the projections of these
-       * faces; otherwise dpana::InputError with a one-line message.
+       * part, whether or not they lie in the candidate region. Every piece
+       * of face of @p first (a face, or a half edge of a patch) must be
+       * covered exactly once by the projections of these faces; otherwise
+       * dpana::InputError with a one-line message.
        */
       void
       pair(const dealii::DoFHandler<dim> &dofs,

@@ -516,6 +516,30 @@ TEST(ContactSurface, VertexPatchOnTheAxisCarriesNoTangentialTraction)
       EXPECT_GT(scene->tangential_traction(j), previous) << j;
       previous = scene->tangential_traction(j);
     }
+
+  // The same cylinder on the floating foundation, without a contact
+  // direction: each element has its own normal, the axis patch's tangent
+  // is tilted by half the angle of its edge, and the foundation's rigid
+  // motion along y has a component along it. The patch is still held.
+  std::string text =
+    dpana::test::hertz_prm(3,
+                           15,
+                           1,
+                           dpana::test::floating_foundation(),
+                           "top",
+                           14,
+                           "  set Contact elements = vertices\n");
+  const std::string entry = "  set Contact direction = 0, -1\n";
+  text.erase(text.find(entry), entry.size());
+  auto pair = make_scene<2>(text, 2);
+  pair->run(false);
+  ASSERT_TRUE(pair->summary().result.converged);
+  EXPECT_GT(pair->surface(0).element(0).tangents[0][1] *
+              pair->surface(0).element(0).tangents[0][1],
+            1e-6);
+  EXPECT_LT(pair->normal_traction(0), 0.0);
+  EXPECT_EQ(pair->tangential_traction(0), 0.0);
+  EXPECT_EQ(pair->summary().result.status[0], contact::ContactStatus::stick);
 }
 
 
