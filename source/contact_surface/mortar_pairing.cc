@@ -133,10 +133,7 @@ namespace dpana
             lambda[2]        = cross(Pv[0], Pv[1], c) / det;
             lambda[0]        = 1 - lambda[1] - lambda[2];
           }
-        dealii::Point<dim> x;
-        for (unsigned int v = 0; v < dim; ++v)
-          x += lambda[v] * F.points[v];
-        return std::make_pair(lambda, x);
+        return std::make_pair(lambda, FacePiece<dim>::point(F, lambda));
       }
 
 

@@ -266,61 +266,30 @@ TEST(ContactSurface, NonMatchingPatchTest2D)
 
 namespace
 {
-  // A quarter disc of radius 40 touching the plane y = 0 at (0, 0), its
-  // candidate surface within 12 mm of the contact point: alone on the rigid
-  // plane (first), and on the top of a rectangle below the plane (second),
-  // both with their contact surfaces built.
+  // The quarter disc of hertz_prm() (radius 40, touching the plane y = 0
+  // at (0, 0), 2 contact refinements within 10 mm), its candidate surface
+  // within 12 mm of the contact point: alone on the rigid plane (first),
+  // and on the top of a rectangle below the plane (second), both with
+  // their contact surfaces built (the tests of the geometry solve
+  // nothing).
   std::pair<std::unique_ptr<dpana::scene::Scene<2>>,
             std::unique_ptr<dpana::scene::Scene<2>>>
   arc_on_plane(const std::string &elements)
   {
-    const std::string disc    = "  subsection Geometry\n"
-                                "    set Type = quarter disc\n"
-                                "    set Global refinements = 2\n"
-                                "    subsection Quarter disc\n"
-                                "      set Radius = 40\n"
-                                "      set Centre = 0, 40\n"
-                                "      set Contact refinements = 2\n"
-                                "      set Contact refinement radius = 10\n"
-                                "    end\n"
-                                "  end\n"
-                                "  subsection Boundary conditions\n"
-                                "    set Symmetry = axis\n"
-                                "  end\n"
-                                "  subsection Loads\n"
-                                "    set Concentrated forces = 0, 40: 0, -1000\n"
-                                "  end\n"
-                                "end\n";
-    const std::string contact = "subsection Contact\n"
-                                "  set Boundary 1 = curved\n"
-                                "  set Boundary 2 = top\n"
-                                "  set Candidate centre = 0, 0\n"
-                                "  set Candidate half width = 12\n"
-                                "  set Contact direction = 0, -1\n"
-                                "  set Contact elements = " +
-                                elements + "\n" + "end\n";
-    auto one =
-      make_scene<2>("set Dimension = 2\nsubsection Body 1\n" + disc + contact,
-                    1);
+    const std::string text = dpana::test::hertz_prm(
+      2, 12, 0, "", "top", 10, "  set Contact elements = " + elements + "\n");
+    auto one = make_scene<2>(text, 1);
     one->assemble();
     one->build_contact_surface();
-    auto two = make_scene<2>(
-      "set Dimension = 2\nset Number of bodies = 2\nsubsection Body 1\n" +
-        disc +
-        "subsection Body 2\n"
-        "  subsection Geometry\n"
-        "    subsection Rectangle\n"
-        "      set Lower corner = 0, -20\n"
-        "      set Upper corner = 30, 0\n"
-        "      set Subdivisions = 7, 5\n"
-        "    end\n"
-        "  end\n"
-        "  subsection Boundary conditions\n"
-        "    set Fixed = bottom: x, y\n"
-        "  end\n"
-        "end\n" +
-        contact,
-      2);
+    auto two = make_scene<2>("set Number of bodies = 2\n" + text +
+                               brick_body("Body 2",
+                                          "rectangle",
+                                          "0, -20",
+                                          "30, 0",
+                                          "7, 5",
+                                          "    set Fixed = bottom: x, y\n",
+                                          ""),
+                             2);
     two->assemble();
     two->build_contact_surface();
     return {std::move(one), std::move(two)};
@@ -643,19 +612,13 @@ TEST(ContactSurface, ProjectedGapOfCylinderOnPlane3D)
   one->build_contact_surface();
   auto two =
     make_scene<3>("set Dimension = 3\nset Number of bodies = 2\n" + cylinder +
-                    "subsection Body 2\n"
-                    "  subsection Geometry\n"
-                    "    set Type = box\n"
-                    "    subsection Box\n"
-                    "      set Lower corner = -30, -10, 0\n"
-                    "      set Upper corner = 30, 0, 8\n"
-                    "      set Subdivisions = 7, 2, 3\n"
-                    "    end\n"
-                    "  end\n"
-                    "  subsection Boundary conditions\n"
-                    "    set Fixed = bottom: x, y, z\n"
-                    "  end\n"
-                    "end\n" +
+                    brick_body("Body 2",
+                               "box",
+                               "-30, -10, 0",
+                               "30, 0, 8",
+                               "7, 2, 3",
+                               "    set Fixed = bottom: x, y, z\n",
+                               "") +
                     contact,
                   2);
   two->assemble();
