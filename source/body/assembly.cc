@@ -5,6 +5,7 @@
 // The assembly of the stiffness matrix and the load vector of a body.
 
 #include <dpana/body/body.h>
+#include <dpana/body/p1_simplex.h>
 
 #include <algorithm>
 
@@ -47,39 +48,43 @@ namespace dpana
     dealii::FullMatrix<double>                                   &cell_matrix,
     dealii::Vector<double> &cell_rhs) const
   {
-    auto                                    &fe_values = values.fe_values;
-    const dealii::FEValuesExtractors::Vector displacement(0);
-    const unsigned int                       n      = fe_.n_dofs_per_cell();
-    const double                             lambda = material_.lambda(dim);
-    const double                             mu     = material_.mu();
+    auto              &fe_values = values.fe_values;
+    const unsigned int n         = fe_.n_dofs_per_cell();
+    const double       lambda    = material_.lambda(dim);
+    const double       mu        = material_.mu();
 
     cell_matrix = 0;
     cell_rhs    = 0;
-    fe_values.reinit(cell);
 
-    // P1 on a simplex with its affine mapping: the strains are constant on
-    // the cell, so the stiffness integral is the integrand at one point
-    // times the measure of the cell.
-    Assert(fe_.degree == 1, dealii::ExcNotImplemented());
-    double measure = 0;
-    for (const unsigned int q : fe_values.quadrature_point_indices())
-      measure += fe_values.JxW(q);
+    // P1 on a simplex with its affine mapping: the shape function of dof i
+    // is e_c lambda_v, the unit vector of its component c times the
+    // barycentric coordinate of its vertex v, so its strain
+    // sym(e_c (x) grad lambda_v) and its divergence d lambda_v / d x_c are
+    // constant on the cell, and the stiffness integral is the integrand
+    // times the measure of the cell (p1_simplex.h).
+    Assert(fe_.degree == 1 && n == dim * (dim + 1),
+           dealii::ExcNotImplemented());
+    const auto simplex = p1_simplex<dim>(cell);
     for (unsigned int i = 0; i < n; ++i)
       {
-        values.eps[i] = fe_values[displacement].symmetric_gradient(i, 0);
-        values.div[i] = dealii::trace(values.eps[i]);
+        const auto [c, v] = fe_.system_to_component_index(i);
+        dealii::Tensor<2, dim> gradient;
+        gradient[c]   = simplex.gradients[v];
+        values.eps[i] = dealii::symmetrize(gradient);
+        values.div[i] = simplex.gradients[v][c];
       }
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j <= i; ++j)
         cell_matrix(i, j) = (lambda * values.div[i] * values.div[j] +
                              2.0 * mu * (values.eps[i] * values.eps[j])) *
-                            measure;
+                            simplex.measure;
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
 
     if (loads_.body_force)
       {
+        fe_values.reinit(cell);
         dealii::Vector<double> b(dim);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {

@@ -5,6 +5,7 @@
 // The stresses of a body and the reaction forces of its supports.
 
 #include <dpana/body/body.h>
+#include <dpana/body/p1_simplex.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,18 +38,13 @@ namespace dpana
 
   // @sect3{Stresses}
 
-  // The strain of a P1 field is constant in a cell, so one evaluation at
-  // the centroid gives it.
+  // The strain of a P1 field is constant in a cell: with the gradients of
+  // the barycentric coordinates (p1_simplex.h), grad u = sum over the dofs
+  // i = (component c, vertex v) of u_i e_c (x) grad lambda_v.
   template <int dim>
   void
   Body<dim>::compute_stresses()
   {
-    const dealii::QGaussSimplex<dim>         centroid(1);
-    dealii::FEValues<dim>                    fe_centroid(mapping_,
-                                      fe_,
-                                      centroid,
-                                      dealii::update_gradients);
-    const dealii::FEValuesExtractors::Vector displacement(0);
     const unsigned int n_cells = triangulation().n_active_cells();
     stress.assign(n_cells, {});
     stress_zz.assign(dim == 2 ? n_cells : 0, 0.0);
@@ -56,14 +52,20 @@ namespace dpana
 
     // A distributed mesh: the cells of this rank (the others are left at
     // zero; the output writes only these).
-    std::vector<dealii::SymmetricTensor<2, dim>> strain(1);
+    std::vector<dealii::types::global_dof_index> local(fe_.n_dofs_per_cell());
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
           continue;
-        fe_centroid.reinit(cell);
-        fe_centroid[displacement].get_function_symmetric_gradients(u, strain);
-        const auto s   = material_.stress(strain[0]);
+        const auto simplex = p1_simplex<dim>(cell);
+        cell->get_dof_indices(local);
+        dealii::Tensor<2, dim> gradient;
+        for (unsigned int i = 0; i < local.size(); ++i)
+          {
+            const auto [c, v] = fe_.system_to_component_index(i);
+            gradient[c] += u[local[i]] * simplex.gradients[v];
+          }
+        const auto s   = material_.stress(dealii::symmetrize(gradient));
         const auto ci  = cell->active_cell_index();
         double     szz = 0;
         stress[ci]     = s;
