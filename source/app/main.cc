@@ -20,12 +20,16 @@
 // converge exits with status 2 (unless Contact / Allow non-converged).
 
 #include <dpana/base/exceptions.h>
+#include <dpana/parallel/mpi_start.h>
+#include <dpana/parallel/route.h>
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/run.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace
@@ -48,8 +52,16 @@ main(int argc, char **argv)
   bool root = true;
   try
     {
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      // MPI starts at once under mpirun, and otherwise only when the scene
+      // needs it (MUMPS): a serial run on CHOLMOD saves MPI_Init's 0.4 s
+      // (parallel/mpi_start.h). One thread for deal.II either way.
+      std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+      dpana::parallel::set_mpi_start([&]() { mpi.emplace(argc, argv, 1); });
+      if (dpana::parallel::launched_by_mpirun())
+        dpana::parallel::start_mpi();
+      else
+        dealii::MultithreadInfo::set_thread_limit(1);
+      root = dpana::parallel::is_root();
 
       bool        print_parameters = false;
       std::string filename;

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
 #include <dpana/condensation/parameters.h>
+#include <dpana/parallel/mpi_start.h>
 
 #include <deal.II/base/patterns.h>
 
@@ -193,8 +194,13 @@ namespace dpana
       concurrent_bodies = prm.get_bool("Concurrent bodies") &&
                           route == parallel::Route::serial &&
                           backend == Backend::cholmod;
+      // MUMPS runs on MPI (on MPI_COMM_SELF on one process): MPI starts
+      // here if it is not running yet (parallel/mpi_start.h).
       if (backend == Backend::mumps)
-        parallel::check_mumps_available();
+        {
+          parallel::start_mpi();
+          parallel::check_mumps_available();
+        }
       out_of_core_directory = prm.get("Out-of-core directory");
       if (!out_of_core_directory.empty())
         check_out_of_core_directory(out_of_core_directory, backend);
