@@ -50,13 +50,14 @@ main(int argc, char **argv)
   // Under mpirun every rank meets the same input errors; rank 0 reports
   // them.
   bool root = true;
+  // MPI starts at once under mpirun, and otherwise only when the scene
+  // needs it (MUMPS): a serial run on CHOLMOD saves MPI_Init's 0.4 s
+  // (parallel/mpi_start.h). One thread for deal.II either way. MPI is
+  // finalised when main() returns.
+  std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+  dpana::parallel::set_mpi_start([&]() { mpi.emplace(argc, argv, 1); });
   try
     {
-      // MPI starts at once under mpirun, and otherwise only when the scene
-      // needs it (MUMPS): a serial run on CHOLMOD saves MPI_Init's 0.4 s
-      // (parallel/mpi_start.h). One thread for deal.II either way.
-      std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
-      dpana::parallel::set_mpi_start([&]() { mpi.emplace(argc, argv, 1); });
       if (dpana::parallel::launched_by_mpirun())
         dpana::parallel::start_mpi();
       else

@@ -26,8 +26,8 @@ namespace dpana
     , fe_values(mapping,
                 fe,
                 quadrature,
-                dealii::update_values | dealii::update_gradients |
-                  dealii::update_quadrature_points | dealii::update_JxW_values)
+                dealii::update_values | dealii::update_quadrature_points |
+                  dealii::update_JxW_values)
     , fe_face_values(mapping,
                      fe,
                      face_quadrature,

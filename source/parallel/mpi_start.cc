@@ -4,7 +4,6 @@
 #include <dpana/parallel/mpi_start.h>
 
 #include <cstdlib>
-#include <stdexcept>
 
 #include <mpi.h>
 
@@ -25,11 +24,13 @@ namespace dpana
 
 
     // The environment that the common launchers give every process they
-    // start: OpenMPI's mpirun, PMIx, the PMI of MPICH's Hydra, Slurm.
+    // start: OpenMPI's mpirun, PMIx, the PMI of MPICH's Hydra, Slurm; and
+    // DPANA_START_MPI for a launcher that sets none of these.
     bool
     launched_by_mpirun()
     {
-      for (const char *name : {"OMPI_COMM_WORLD_SIZE",
+      for (const char *name : {"DPANA_START_MPI",
+                               "OMPI_COMM_WORLD_SIZE",
                                "PMIX_RANK",
                                "PMI_RANK",
                                "PMI_SIZE",
@@ -57,11 +58,10 @@ namespace dpana
       MPI_Initialized(&initialized);
       if (initialized)
         return;
-      if (!mpi_start())
-        throw std::logic_error("MPI is needed (MUMPS) but not running, and "
-                               "the program set no way to start it "
-                               "(parallel::set_mpi_start)");
-      mpi_start()();
+      // A program that set no start (a tutorial step): MUMPS' first use
+      // initialises PETSc, and PETSc MPI, as before (petsc_calls.h).
+      if (mpi_start())
+        mpi_start()();
     }
   } // namespace parallel
 } // namespace dpana

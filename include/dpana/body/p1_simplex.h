@@ -46,6 +46,7 @@ namespace dpana
   P1Simplex<dim>
   p1_simplex(const std::array<dealii::Point<dim>, dim + 1> &vertices)
   {
+    static_assert(dim == 2 || dim == 3, "triangles and tetrahedra only");
     dealii::Tensor<2, dim> J;
     for (unsigned int k = 0; k < dim; ++k)
       for (unsigned int i = 0; i < dim; ++i)
