@@ -372,15 +372,17 @@ FAMILIES.append(Family(
     note="Two equal spheres R = 40, P = 300 kN, frictionless, on nested "
          "meshes (make_sphere.py --level -2 --refine k)"))
 
-# The 2D Hertz scenes on the rigid plane with patches around the vertices
-# of the candidate surface (Contact / Contact elements = vertices: as many
-# tractions as surface vertices) instead of groups of two edges: the same
-# scenes and meshes, one entry more at every level. GetFEM's records of a
+# The 2D Hertz scenes on the rigid plane, the quarter sphere and the two
+# spheres with patches around the vertices of the candidate surface
+# (Contact / Contact elements = vertices: as many tractions as surface
+# vertices) instead of groups of faces (two edges, eight triangles): the
+# same scenes and meshes, one entry more at every level. GetFEM's records of a
 # variant are those of its scene (getfem/sweep.py).
 VERTICES = {"Contact/Contact elements": "vertices"}
 VERTEX_VARIANTS = ("hertz_rigid_mu0", "hertz_rigid_mu1",
                    "hertz_rigid_mu0_graded", "hertz_rigid_mu1_graded",
-                   "hertz_rigid_mu0_r10", "hertz_rigid_mu0_d_shaped")
+                   "hertz_rigid_mu0_r10", "hertz_rigid_mu0_d_shaped",
+                   "hertz_sphere_rigid", "hertz_two_spheres")
 
 
 def vertex_variant(f):

@@ -63,19 +63,19 @@ namespace dpana
 
 
 
-    // @sect3{Patches on symmetry lines}
+    // @sect3{Patches on symmetry lines and planes}
     //
     // The vertex of a patch is the corner of its first piece at which the
     // barycentric coordinate is 1 (group_around_vertices()). A component c
     // of its displacement is held if a constraint without entries sets it
-    // to zero. The tangential displacement counts as held if the held
-    // components make up more than half of tau (tau_c^2 > 1/2): with the
-    // elements' own normals the half edge at the axis is tilted by half
-    // its angle on the arc, and its tangent is not exactly the held
-    // direction.
+    // to zero. The tangential displacement along tau_k counts as held if
+    // the held components make up more than half of tau_k (tau_kc^2 >
+    // 1/2): with the elements' own normals the patch at the axis is tilted
+    // by half its angle on the arc, and its tangent is not exactly the
+    // held direction.
     template <int dim>
     std::vector<unsigned int>
-    tangentially_held_patches(
+    tangentially_held_unknowns(
       const Body<dim>                            &body,
       const contact_surface::ContactSurface<dim> &surface)
     {
@@ -91,7 +91,7 @@ namespace dpana
                constraints.get_constraint_entries(i)->empty();
       };
       const auto               &faces = surface.get_faces();
-      std::vector<unsigned int> held(surface.n_elements(), 0);
+      std::vector<unsigned int> held(dim * surface.n_elements(), 0);
       for (unsigned int j = 0; j < surface.n_elements(); ++j)
         {
           const auto  &e     = surface.element(j);
@@ -108,7 +108,7 @@ namespace dpana
                 ++n_held;
                 for (unsigned int k = 0; k + 1 < dim; ++k)
                   if (e.tangents[k][c] * e.tangents[k][c] > 0.5)
-                    held[j] = 1;
+                    held[dim * j + 1 + k] = 1;
               }
           if (n_held == dim)
             throw InputError(
@@ -125,9 +125,9 @@ namespace dpana
       std::vector<unsigned int> any(held.size());
       dealii::Utilities::MPI::max(held, body.communicator(), any);
       std::vector<unsigned int> list;
-      for (unsigned int j = 0; j < any.size(); ++j)
-        if (any[j] != 0)
-          list.push_back(j);
+      for (unsigned int i = 0; i < any.size(); ++i)
+        if (any[i] != 0)
+          list.push_back(i);
       return list;
     }
 
@@ -135,21 +135,19 @@ namespace dpana
 
     void
     hold_tangential_tractions(contact::ContactProblem         &problem,
-                              const std::vector<unsigned int> &elements)
+                              const std::vector<unsigned int> &unknowns)
     {
-      const unsigned int d = problem.dim;
-      for (const unsigned int j : elements)
-        for (unsigned int k = 1; k < d; ++k)
-          {
-            const unsigned int t        = d * j + k;
-            const double       diagonal = problem.A(t, t);
-            problem.A.row(t).setZero();
-            problem.A.col(t).setZero();
-            problem.A(t, t) = diagonal;
-            problem.D(t)    = 0;
-            if (problem.G.rows() > 0)
-              problem.G.col(t).setZero();
-          }
+      for (const unsigned int t : unknowns)
+        {
+          Assert(t % problem.dim != 0, dealii::ExcInternalError());
+          const double diagonal = problem.A(t, t);
+          problem.A.row(t).setZero();
+          problem.A.col(t).setZero();
+          problem.A(t, t) = diagonal;
+          problem.D(t)    = 0;
+          if (problem.G.rows() > 0)
+            problem.G.col(t).setZero();
+        }
     }
 
 
@@ -179,11 +177,11 @@ namespace dpana
                              const contact::ConeModel,
                              const unsigned int);
     template std::vector<unsigned int>
-    tangentially_held_patches(const Body<2> &,
-                              const contact_surface::ContactSurface<2> &);
+    tangentially_held_unknowns(const Body<2> &,
+                               const contact_surface::ContactSurface<2> &);
     template std::vector<unsigned int>
-    tangentially_held_patches(const Body<3> &,
-                              const contact_surface::ContactSurface<3> &);
+    tangentially_held_unknowns(const Body<3> &,
+                               const contact_surface::ContactSurface<3> &);
     template double
     largest_asymmetry(const std::vector<const Condenser<2> *> &);
     template double

@@ -110,6 +110,20 @@ namespace dpana
 
 
     template <int dim>
+    Face<dim>
+    FacePiece<dim>::as_face(const Face<dim> &F) const
+    {
+      Face<dim>  P       = F;
+      const auto corners = corner_points(F);
+      P.points.assign(corners.begin(), corners.end());
+      P.centroid = point(F, centroid());
+      P.area     = fraction() * F.area;
+      return P;
+    }
+
+
+
+    template <int dim>
     void
     ContactSurface<dim>::build(const dealii::DoFHandler<dim> &dofs,
                                const Options                 &options,

@@ -69,20 +69,56 @@ namespace dpana
 
 
 
+    namespace
+    {
+      // The pieces of face f nearer to its vertex k than to its other
+      // vertices (group_around_vertices()).
+      template <int dim>
+      std::vector<FacePiece<dim>>
+      pieces_at_vertex(const unsigned int f, const unsigned int k)
+      {
+        std::array<double, dim> vertex{}, centroid{};
+        vertex[k] = 1;
+        centroid.fill(1.0 / dim);
+        if constexpr (dim == 2)
+          return {FacePiece<dim>{f, {{vertex, centroid}}}};
+        else
+          {
+            std::vector<FacePiece<dim>> pieces;
+            for (const unsigned int j : {(k + 1) % 3, (k + 2) % 3})
+              {
+                std::array<double, dim> midpoint{};
+                midpoint[k] = midpoint[j] = 0.5;
+                pieces.push_back(
+                  FacePiece<dim>{f, {{vertex, midpoint, centroid}}});
+              }
+            return pieces;
+          }
+      }
+    } // namespace
+
+
+
     // @sect3{Patches around the vertices}
     //
-    // 2D: every vertex of the candidate edges carries one element, made of
-    // the halves of the (one or two) candidate edges next to it. The half
-    // of edge f next to its vertex k has the corners e_k and (1/2, 1/2) in
-    // the barycentric coordinates of f. The elements are numbered along the
-    // surface (by the tangential coordinate of their vertex).
+    // Every vertex of the candidate faces carries one element, made of the
+    // parts of the faces next to it that lie nearer to it than to the other
+    // vertices of the face (the median dual cell of the surface mesh):
+    // - 2D: the half of edge f next to its vertex k, with the corners e_k
+    //   and (1/2, 1/2) in the barycentric coordinates of f;
+    // - 3D: the quadrilateral of triangle f between its vertex k, the
+    //   midpoints of the two edges at k and the centroid, as the two
+    //   triangles (e_k, m_kj, c) and (e_k, m_kl, c), each a sixth of f.
+    // The first corner of every piece is the vertex
+    // (condensation::tangentially_held_unknowns() reads it there). The elements
+    // are numbered along the surface (by the tangential coordinates of their
+    // vertex).
     template <int dim>
     void
     ContactSurface<dim>::group_around_vertices()
     {
-      AssertThrow(dim == 2, dealii::ExcNotImplemented());
-      std::map<unsigned int, unsigned int> element_of_vertex;
-      std::vector<double>                  s_vertex;
+      std::map<unsigned int, unsigned int>   element_of_vertex;
+      std::vector<std::pair<double, double>> st_vertex;
       elements.clear();
       for (unsigned int f = 0; f < faces.size(); ++f)
         for (unsigned int k = 0; k < dim; ++k)
@@ -92,14 +128,14 @@ namespace dpana
             if (is_new)
               {
                 elements.emplace_back();
-                s_vertex.push_back(faces[f].points[k] * tau_surface[0]);
+                const auto &x = faces[f].points[k];
+                st_vertex.emplace_back(x * tau_surface[0],
+                                       x * tau_surface[dim - 2]);
               }
-            FacePiece<dim> half{f, {}};
-            half.corners[0][k] = 1;
-            half.corners[1].fill(1.0 / dim);
             auto &e = elements[it->second];
             e.faces.push_back(f);
-            e.pieces.push_back(half);
+            for (const auto &piece : pieces_at_vertex<dim>(f, k))
+              e.pieces.push_back(piece);
           }
 
       std::vector<unsigned int> order(elements.size());
@@ -107,7 +143,7 @@ namespace dpana
       std::sort(order.begin(),
                 order.end(),
                 [&](const unsigned int a, const unsigned int b) {
-                  return s_vertex[a] < s_vertex[b];
+                  return st_vertex[a] < st_vertex[b];
                 });
       std::vector<ContactElement<dim>> sorted;
       for (const unsigned int j : order)

@@ -260,21 +260,6 @@ namespace dpana
 
 
 
-      // The piece of a face of the first body as a flat face of its own
-      // (its corners and centroid), to be projected like a face.
-      template <int dim>
-      Face<dim>
-      piece_as_face(const Face<dim> &F, const FacePiece<dim> &piece)
-      {
-        Face<dim>  P       = F;
-        const auto corners = piece.corner_points(F);
-        P.points.assign(corners.begin(), corners.end());
-        P.centroid = FacePiece<dim>::point(F, piece.centroid());
-        return P;
-      }
-
-
-
       // Keep only the faces that some element uses, renumbered in the order
       // of their first use.
       template <int dim>
@@ -321,8 +306,7 @@ namespace dpana
           e.gap_integral = 0;
           for (const auto &piece : e1.pieces)
             {
-              const Face<dim> F1 =
-                piece_as_face(first.faces[piece.face], piece);
+              const Face<dim>     F1 = piece.as_face(first.faces[piece.face]);
               const ProjectedFace P1 = project(F1, e1.tangents);
               const double        m1 = measure<dim>(P1);
               const double        covered =
@@ -330,7 +314,7 @@ namespace dpana
               if (std::abs(covered - m1) > 1e-9 * m1)
                 throw InputError(
                   std::string("Contact: the ") +
-                  (piece.fraction() < 1 ? "half edge" : "face") + " of " +
+                  (piece.fraction() < 1 ? "piece of face" : "face") + " of " +
                   first.opts.body + " at " +
                   internal::format_point(F1.centroid) + " is " +
                   (covered < m1 ? "not covered by" :

@@ -59,9 +59,11 @@ namespace dpana
         Selection("faces|vertices"),
         "The parts of Gamma_c that carry one constant traction. faces: "
         "groups of Faces per contact element adjacent faces (the reference "
-        "formulation). vertices (2D only, Faces per contact element = 0): "
-        "one element around each vertex of Gamma_c, made of the halves of "
-        "the edges next to it; as many tractions as surface vertices, the "
+        "formulation). vertices (Faces per contact element = 0): one "
+        "element around each vertex of Gamma_c, made of the parts of the "
+        "faces next to it nearer to it than to their other vertices (in 2D "
+        "the halves of the edges next to it); as many tractions as surface "
+        "vertices, the "
         "traction form of nodal contact conditions, more accurate per "
         "degree of freedom on coarse meshes.");
       prm.declare_entry("Contact direction",
@@ -97,9 +99,6 @@ namespace dpana
       shape             = prm.get("Contact elements") == "vertices" ?
                             ElementShape::vertex_patches :
                             ElementShape::face_groups;
-      if (shape == ElementShape::vertex_patches && dim != 2)
-        throw InputError("Contact / Contact elements = vertices: only in 2D "
-                         "(use faces in 3D)");
       if (shape == ElementShape::vertex_patches && faces_per_element != 0)
         throw InputError("Contact / Faces per contact element = " +
                          std::to_string(faces_per_element) +

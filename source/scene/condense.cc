@@ -54,11 +54,11 @@ namespace dpana
         parts.push_back(c.get());
       problem_ = condensation::assemble_contact_problem(
         parts, *surfaces[0], law.friction, law.cone, law.polygon_sides);
-      // Patches around vertices on a symmetry line carry no tangential
-      // traction (tangentially_held_patches()).
+      // Patches around vertices on a symmetry line or plane carry no
+      // tangential traction across it (tangentially_held_unknowns()).
       condensation::hold_tangential_tractions(
         problem_,
-        condensation::tangentially_held_patches(*bodies[0], *surfaces[0]));
+        condensation::tangentially_held_unknowns(*bodies[0], *surfaces[0]));
       summary_.asymmetry = condensation::largest_asymmetry(parts);
       check_held_by_contact(bodies, problem_);
       if (quiet)

@@ -481,10 +481,12 @@ namespace dpana
           const auto   &e     = surface.element(j);
           double        r_min = std::numeric_limits<double>::max(), r_max = 0;
           PressurePiece piece{0, 0, -summary.result.r(dim * j)};
-          for (const unsigned int f : e.faces)
+          for (const auto &p : e.pieces)
             {
               const auto m =
-                radial_moments(surface.get_faces()[f], x0, e.normal);
+                radial_moments(p.as_face(surface.get_faces()[p.face]),
+                               x0,
+                               e.normal);
               piece.area += m[0];
               piece.r2_integral += m[1];
               r_min = std::min(r_min, m[2]);

@@ -40,7 +40,9 @@ families.py):
   hertz_ratio_{1,1e3}_mu1_graded_block, hertz_ratio_1e-3_mu{0,1}_graded_block,
   hertz_cavity_mu1_graded   the same as the families without _graded...
                             (paired with dpana's graded meshes)
-  hertz_rigid_*_vertices    the same as the family without _vertices
+  hertz_rigid_*_vertices, hertz_sphere_rigid_vertices,
+  hertz_two_spheres_vertices
+                            the same as the family without _vertices
                             (paired with dpana's patches around the
                             vertices)
   receding_3d_L80           receding_3d.py (mu = 1, nu = 0)
@@ -147,7 +149,8 @@ FAMILIES["hertz_cavity_mu1_graded"] = FAMILIES["hertz_cavity_mu1"]
 # (families.py VERTEX_VARIANTS).
 for name in ("hertz_rigid_mu0", "hertz_rigid_mu1", "hertz_rigid_mu0_graded",
              "hertz_rigid_mu1_graded", "hertz_rigid_mu0_r10",
-             "hertz_rigid_mu0_d_shaped"):
+             "hertz_rigid_mu0_d_shaped", "hertz_sphere_rigid",
+             "hertz_two_spheres"):
     FAMILIES[name + "_vertices"] = FAMILIES[name]
 # h of a level, in the units of the dpana family (families.py).
 H = {"hertz.py": lambda level: 2.0 ** -level,

@@ -53,16 +53,17 @@ namespace dpana
 
     /**
      * Patches around the vertices (ContactSurface with
-     * ElementShape::vertex_patches): the elements whose vertex has its
-     * displacement along the element's tangent held to zero by a
-     * constraint of @p body (Body 1): a vertex on a symmetry line across
-     * the surface, the axis of a half model. In the mirrored whole model
-     * such a patch is the half of one that straddles the symmetry line,
-     * where the tangential traction is odd: its constant tangential
-     * traction is zero. In the half model it acts only through the
-     * neighbouring vertex, together with that vertex's own patch, and is
-     * left undetermined (the friction solver would put it on the edge of
-     * the friction set and its neighbour opposite);
+     * ElementShape::vertex_patches): the tangential unknowns (index
+     * dim j + 1 + k for the tangent tau_k of element j) whose vertex has its
+     * displacement along tau_k held to zero by a constraint of @p body
+     * (Body 1): a vertex on a symmetry line or plane across the surface,
+     * the axis of a half model, the planes of a quarter model. In the
+     * mirrored whole model such a patch is the part of one that straddles
+     * the symmetry line or plane, where the traction component across it
+     * is odd: its constant value is zero. In the model that component acts
+     * only through the neighbouring vertices, together with their own
+     * patches, and is left undetermined (the friction solver would put it
+     * on the edge of the friction set and its neighbour opposite);
      * hold_tangential_tractions() holds it at zero. Empty for groups of
      * faces. Throws dpana::InputError if a patch's vertex is held in every
      * direction (a fixed vertex): no free displacement would resist its
@@ -70,23 +71,23 @@ namespace dpana
      */
     template <int dim>
     std::vector<unsigned int>
-    tangentially_held_patches(
+    tangentially_held_unknowns(
       const Body<dim>                            &body,
       const contact_surface::ContactSurface<dim> &surface);
 
     /**
-     * Hold the tangential tractions of the elements @p elements of
-     * @p problem at zero: their rows and columns of A are cleared but for
-     * the diagonal, their rows of D and their columns of the equilibrium
-     * rows G (so that the rigid motion of a floating body does not enter
-     * their tangential displacement). The tangential displacement of such
-     * an element is then u_T = A_TT T, which the Coulomb law allows only
-     * with T = 0 and u_T = 0 (stick while in contact), and the other
-     * unknowns solve the problem without these tractions.
+     * Hold the tangential tractions @p unknowns of @p problem at zero: their
+     * rows and columns of A are cleared but for the diagonal, their rows of
+     * D and their columns of the equilibrium rows G (so that the rigid
+     * motion of a floating body does not enter their tangential
+     * displacement). Such a tangential displacement is then u_t = A_tt T_t,
+     * which the Coulomb law allows only with T_t = 0 and u_t = 0 (stick
+     * while in contact), and the other unknowns solve the problem without
+     * these tractions.
      */
     void
     hold_tangential_tractions(contact::ContactProblem         &problem,
-                              const std::vector<unsigned int> &elements);
+                              const std::vector<unsigned int> &unknowns);
 
     /**
      * The largest relative asymmetry ||A_b - A_b^T||_F / ||A_b||_F of the

@@ -57,9 +57,10 @@ namespace dpana
      * of the coupling operator V is a P1 shape function times a constant
      * traction, linear on each face, and the rules are exact for it: one
      * point at the centroid of each piece of face of the element (a whole
-     * face, or a half edge, whose midpoint has the barycentric coordinates
-     * 3/4 and 1/4), or one at the centroid of each overlap of such a piece
-     * with a face of the other body (the second body of a pair).
+     * face, a half edge, whose midpoint has the barycentric coordinates
+     * 3/4 and 1/4, or a sixth of a triangle), or one at the centroid of each
+     * overlap of such a piece with a face of the other body (the second body of
+     * a pair).
      */
     template <int dim>
     struct SurfacePoint
@@ -75,7 +76,9 @@ namespace dpana
      * inside the face, given by the barycentric coordinates of its corners
      * with respect to the face's vertices (corner k is sum_v corners[k][v]
      * times vertex v). A whole face has the unit corners; in 2D the half of
-     * an edge next to its vertex v has the corners e_v and (1/2, 1/2).
+     * an edge next to its vertex v has the corners e_v and (1/2, 1/2); in 3D
+     * a sixth of a triangle next to its vertex v the corners e_v, the
+     * midpoint of an edge at v and the centroid (1/3, 1/3, 1/3).
      */
     template <int dim>
     struct FacePiece
@@ -106,10 +109,17 @@ namespace dpana
        */
       std::array<double, dim>
       centroid() const;
+
+      /**
+       * The piece as a flat face of its own: the face @p F with the piece's
+       * corners, centroid and area (its cell, normal and dofs are F's).
+       */
+      Face<dim>
+      as_face(const Face<dim> &F) const;
     };
 
     /**
-     * The shape of the contact elements: groups of whole faces, or (2D)
+     * The shape of the contact elements: groups of whole faces, or
      * one element around each vertex of the candidate surface.
      */
     enum class ElementShape
@@ -119,7 +129,7 @@ namespace dpana
     };
 
     /**
-     * A contact element: a group of adjacent faces, or in 2D the patch
+     * A contact element: a group of adjacent faces, or the patch
      * around one vertex, that carries one piecewise constant traction
      * (N, T) in its local frame.
      *
@@ -135,7 +145,8 @@ namespace dpana
      *   one is curved (the cylinder) and the other flat (the foundation);
      *   on a flat element it is the plain area.
      * - pieces: the parts of faces the element covers on the first body
-     *   (whole faces for groups of faces, half edges for vertex patches);
+     *   (whole faces for groups of faces; for vertex patches half edges in
+     *   2D, the two sixths of each triangle next to the vertex in 3D);
      *   faces lists the faces they lie on.
      * - points: the quadrature rule of this body's side of the element; the
      *   weights add up to area.
@@ -202,18 +213,19 @@ namespace dpana
      * leftover of one or two triangles would carry a mean traction over a
      * much smaller area than its neighbours and stand out of the profile.
      *
-     * <h3>Patches around the vertices (2D)</h3>
+     * <h3>Patches around the vertices</h3>
      *
      * With the shape ElementShape::vertex_patches (parameter Contact /
      * Contact elements = vertices) each vertex of the candidate surface
-     * carries one contact element: the halves of the candidate edges next
-     * to it, from the vertex to their midpoints (the dual cell of the
-     * vertex on the surface). There are then as many constant tractions
-     * as surface vertices, the traction form of the nodal contact
-     * conditions of displacement-based contact codes. The element's
-     * quadrature points are the midpoints of its half edges, where the P1
-     * shape functions of the edge are 3/4 and 1/4 (exact for the linear
-     * integrand).
+     * carries one contact element, the median dual cell of the vertex on
+     * the surface: in 2D the halves of the candidate edges next to it, from
+     * the vertex to their midpoints; in 3D the part of each candidate
+     * triangle next to it bounded by the midpoints of its two edges at the
+     * vertex and its centroid (two triangles, each a sixth of the face).
+     * There are then as many constant tractions as surface vertices, the
+     * traction form of the nodal contact conditions of displacement-based
+     * contact codes. The element's quadrature points are the centroids of
+     * its pieces (exact for the linear integrand).
      *
      * <h3>Frames and gaps</h3>
      *
@@ -262,7 +274,7 @@ namespace dpana
         double             region_half_width = 0;
         // Faces per contact element (0: 2 in 2D, 8 in 3D).
         unsigned int faces_per_element = 0;
-        // Groups of faces, or one patch around each vertex (2D).
+        // Groups of faces, or one patch around each vertex.
         ElementShape shape = ElementShape::face_groups;
         // Contact direction (zero: the element's mean outward normal).
         dealii::Tensor<1, dim> direction;
@@ -286,7 +298,7 @@ namespace dpana
        * set to the normal distance between the two surfaces. Only the faces
        * of the mesh of @p dofs that face the first body (outward normal . n < 0) take
        * part, whether or not they lie in the candidate region. Every piece
-       * of face of @p first (a face, or a half edge of a patch) must be
+       * of face of @p first (a face, or a piece of a patch) must be
        * covered exactly once by the projections of these faces; otherwise
        * dpana::InputError with a one-line message.
        */

@@ -57,7 +57,7 @@ namespace dpana
       double             region_half_width = 0;
       // Faces per contact element (0: 2 edges in 2D, 8 triangles in 3D).
       unsigned int faces_per_element = 0;
-      // Groups of faces, or patches around the vertices (2D).
+      // Groups of faces, or patches around the vertices.
       ElementShape shape = ElementShape::face_groups;
       // The contact direction n, out of Body 1 (zero: not given, the
       // element normals).

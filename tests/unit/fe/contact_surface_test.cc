@@ -182,6 +182,24 @@ TEST(ContactSurface, GreedyAgglomerationCoversTheSurface)
 
 namespace
 {
+  // The frictionless contact of the bottom of Body 1 with the top of Body 2
+  // along @p direction, on the contact elements @p elements.
+  std::string
+  stacked_contact(const std::string &direction, const std::string &elements)
+  {
+    return "subsection Contact\n"
+           "  set Boundary 1 = bottom\n"
+           "  set Boundary 2 = top\n"
+           "  set Contact direction = " +
+           direction +
+           "\n"
+           "  set Friction coefficient = 0\n"
+           "  set Contact elements = " +
+           elements +
+           "\n"
+           "end\n";
+  }
+
   // Two stacked rectangles in 2D: the block [0, 40] x [0, 40] with n1 x n1
   // cells on the foundation [0, 40] x [-40, 0] with n2 x n2 cells (n1 != n2:
   // non-matching interface), 50 MPa on the top of the block, 100 MPa on the
@@ -208,15 +226,7 @@ namespace
                       std::to_string(n2) + ", " + std::to_string(n2),
                       "    set Symmetry = left\n    set Fixed = bottom: y\n",
                       "    set Pressure = right: 100\n") +
-           "subsection Contact\n"
-           "  set Boundary 1 = bottom\n"
-           "  set Boundary 2 = top\n"
-           "  set Contact direction = 0, -1\n"
-           "  set Friction coefficient = 0\n"
-           "  set Contact elements = " +
-           elements +
-           "\n"
-           "end\n";
+           stacked_contact("0, -1", elements);
   }
 } // namespace
 
@@ -513,6 +523,36 @@ TEST(ContactSurface, VertexPatchOnTheAxisCarriesNoTangentialTraction)
 
 
 
+namespace
+{
+  // The stacked boxes of the 3D patch tests below, with the contact
+  // elements @p elements (faces or vertices).
+  std::string
+  stacked_boxes_prm(const std::string &elements)
+  {
+    return "set Dimension = 3\n"
+           "set Number of bodies = 2\n" +
+           brick_body("Body 1",
+                      "box",
+                      "0, 0, 0",
+                      "8, 4, 8",
+                      "4, 2, 4",
+                      "    set Symmetry = left; front\n",
+                      "    set Pressure = top: 50; right: 100; back: 100\n") +
+           brick_body(
+             "Body 2",
+             "box",
+             "0, -4, 0",
+             "8, 0, 8",
+             "3, 2, 3",
+             "    set Symmetry = left; front\n    set Fixed = bottom: y\n",
+             "    set Pressure = right: 100; back: 100\n") +
+           stacked_contact("0, -1, 0", elements);
+  }
+} // namespace
+
+
+
 // Patch test of the projection in 3D: the stacked boxes [0, 8] x [0, 4] x
 // [0, 8] (4 x 2 x 4 cells) on [0, 8] x [-4, 0] x [0, 8] (3 x 2 x 3 cells:
 // the interface triangles do not match), symmetry on x = 0 and z = 0,
@@ -524,30 +564,8 @@ TEST(ContactSurface, VertexPatchOnTheAxisCarriesNoTangentialTraction)
 // element's area (2 x 2 cells of 2 x 2 mm).
 TEST(ContactSurface, NonMatchingPatchTest3D)
 {
-  const std::string text =
-    "set Dimension = 3\n"
-    "set Number of bodies = 2\n" +
-    brick_body("Body 1",
-               "box",
-               "0, 0, 0",
-               "8, 4, 8",
-               "4, 2, 4",
-               "    set Symmetry = left; front\n",
-               "    set Pressure = top: 50; right: 100; back: 100\n") +
-    brick_body("Body 2",
-               "box",
-               "0, -4, 0",
-               "8, 0, 8",
-               "3, 2, 3",
-               "    set Symmetry = left; front\n    set Fixed = bottom: y\n",
-               "    set Pressure = right: 100; back: 100\n") +
-    "subsection Contact\n"
-    "  set Boundary 1 = bottom\n"
-    "  set Boundary 2 = top\n"
-    "  set Contact direction = 0, -1, 0\n"
-    "  set Friction coefficient = 0\n"
-    "end\n";
-  auto s = make_scene<3>(text, 2);
+  const std::string text = stacked_boxes_prm("faces");
+  auto              s    = make_scene<3>(text, 2);
   s->run(false);
   ASSERT_TRUE(s->summary().result.converged);
   ASSERT_EQ(s->summary().n_elements, 4u);
@@ -572,6 +590,45 @@ TEST(ContactSurface, NonMatchingPatchTest3D)
             << "body " << b << " element " << j;
         }
     }
+}
+
+
+
+// The same patch test with patches around the vertices: one element per
+// vertex of the 4 x 4 cells of the base (25), each at N = -50, T = 0, and
+// each column of V adding up to +-the element's area on both sides although
+// the foundation's triangles do not match. That area is a third of the
+// areas of the element's triangles (the median dual cell of its vertex),
+// and the areas add up to the base's 64 mm^2. The patches
+// of the vertices on the symmetry planes hold their tangential traction
+// across the plane, which the exact solution has zero anyway.
+TEST(ContactSurface, VertexPatchesPassThePatchTest3D)
+{
+  auto s = make_scene<3>(stacked_boxes_prm("vertices"), 2);
+  s->run(false);
+  ASSERT_TRUE(s->summary().result.converged);
+  ASSERT_EQ(s->summary().n_elements, 25u);
+  double total = 0;
+  for (unsigned int j = 0; j < s->summary().n_elements; ++j)
+    {
+      EXPECT_NEAR(s->normal_traction(j), -50.0, 50.0 * 1e-9) << j;
+      for (unsigned int k = 0; k < 2; ++k)
+        EXPECT_NEAR(s->tangential_traction(j, k), 0.0, 50.0 * 1e-9) << j;
+      const auto &e     = s->surface(0).element(j);
+      double      third = 0;
+      for (const unsigned int f : e.faces)
+        third += s->surface(0).get_faces()[f].area / 3;
+      EXPECT_NEAR(e.area, third, 1e-12) << j;
+      total += e.area;
+      for (unsigned int b = 0; b < 2; ++b)
+        {
+          const auto  &V   = s->condenser(b).coupling();
+          const double sum = Eigen::VectorXd(V.col(3 * j)).sum();
+          EXPECT_NEAR(sum, b == 0 ? -e.area : e.area, 1e-12)
+            << "body " << b << " element " << j;
+        }
+    }
+  EXPECT_NEAR(total, 64.0, 1e-12);
 }
 
 
@@ -773,8 +830,7 @@ TEST(ContactSurface, ParameterErrorsNameTheEntry)
             "Contact / Contact direction: must not be the zero vector "
             "(leave it empty for the element normals)");
   EXPECT_EQ(surface_parameter_error<3>("set Contact elements = vertices\n"),
-            "Contact / Contact elements = vertices: only in 2D (use faces in "
-            "3D)");
+            "");
   EXPECT_EQ(surface_parameter_error<2>("set Contact elements = vertices\n"
                                        "set Faces per contact element = 3\n"),
             "Contact / Faces per contact element = 3: must be 0 with Contact "

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -329,4 +330,132 @@ TEST(HertzSphere, ApproachNotMeasuredOutsideTheMesh)
   EXPECT_FALSE(scene->summary().estimates.approach_measured);
   EXPECT_EQ(hertz_sphere_values(scene->summary()).count("approach_measured"),
             0u);
+}
+
+
+
+namespace
+{
+  // prm/hertz_sphere_rigid.prm on the mesh of level 0 with patches around
+  // the vertices (Contact / Contact elements = vertices), run.
+  std::unique_ptr<dpana::scene::Scene<3>>
+  sphere_with_patches(const double mu)
+  {
+    std::string       prm   = sphere_prm(sphere_mesh(0), mu);
+    const std::string entry = "  set Contact direction = 0, -1, 0\n";
+    prm.insert(prm.find(entry) + entry.size(),
+               "  set Contact elements = vertices\n");
+    auto scene = dpana::test::make_scene<3>(prm);
+    scene->run(false);
+    EXPECT_TRUE(scene->summary().result.converged);
+    return scene;
+  }
+
+  // The vertex of patch @p e: the first corner of its first piece.
+  dealii::Point<3>
+  patch_vertex(const dpana::contact_surface::ContactSurface<3> &surface,
+               const dpana::contact_surface::ContactElement<3> &e)
+  {
+    return e.pieces[0].corner_points(surface.get_faces()[e.pieces[0].face])[0];
+  }
+} // namespace
+
+
+
+// Patches around the vertices of the cap (level 0: 446 triangles, 252
+// vertices), frictionless. Each patch is the median dual cell of its vertex,
+// which takes exactly a third of every triangle at the vertex: its
+// projected area must be a third of the projected areas of its faces, and
+// all patches together the whole cap. The moment estimate a_m of the Hertz
+// comparison is then taken over the pieces of the patches: recomputed here
+// from the tractions, with the integral of r^2 over each piece by the rule
+// of its edge midpoints (exact for a quadratic), it must agree to
+// round-off; taken over whole faces (each face in three patches) it would
+// not. Against Hertz: a_m within 2 % (measured -1.56 %: the patches give
+// the groups' -1.37 % to within 0.2 %; benchmarks/convergence).
+TEST(HertzSphere, VertexPatchesOfTheCap)
+{
+  auto        scene   = sphere_with_patches(0);
+  const auto &surface = scene->surface(0);
+  EXPECT_EQ(surface.n_elements(), surface.n_vertices());
+  const dealii::Tensor<1, 3> n({0, -1, 0});
+  double                     cap = 0, patches = 0, force = 0, moment = 0;
+  for (const auto &F : surface.get_faces())
+    cap += F.area * (F.normal * n);
+  for (unsigned int j = 0; j < surface.n_elements(); ++j)
+    {
+      const auto &e     = surface.element(j);
+      double      third = 0;
+      for (const unsigned int f : e.faces)
+        third +=
+          surface.get_faces()[f].area * (surface.get_faces()[f].normal * n) / 3;
+      EXPECT_NEAR(e.area, third, 1e-12 * third) << "element " << j;
+      patches += e.area;
+      for (const auto &piece : e.pieces)
+        {
+          const auto   x = piece.corner_points(surface.get_faces()[piece.face]);
+          const double area = piece.fraction() *
+                              surface.get_faces()[piece.face].area *
+                              (surface.get_faces()[piece.face].normal * n);
+          double r2 = 0;
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              const dealii::Point<3> m = 0.5 * (x[k] + x[(k + 1) % 3]);
+              r2 += (m[0] * m[0] + m[2] * m[2]) / 3;
+            }
+          force -= scene->normal_traction(j) * area;
+          moment -= scene->normal_traction(j) * area * r2;
+        }
+    }
+  EXPECT_NEAR(patches, cap, 1e-12 * cap);
+  EXPECT_NEAR(force, 75000, 1e-9 * 75000);
+  const auto v = hertz_sphere_values(scene->summary());
+  EXPECT_NEAR(v.at("a_moment"), std::sqrt(2.5 * moment / force), 1e-12);
+  EXPECT_LT(std::abs(v.at("a_moment_error")), 0.02);
+}
+
+
+
+// With friction (mu = 0.3) and patches, the planes x = 0 and z = 0 of the
+// quarter model are symmetry planes: across them the tangential traction is
+// odd, so a patch whose vertex lies on one carries no tangential traction
+// across it (condensation::tangentially_held_unknowns()), and the one at the
+// contact point, on both, none at all. Along the plane it is free: the
+// radial traction of the frictional Hertz contact points along it there. The
+// frame of n = (0, -1, 0) is tau_1 = x, tau_2 = z.
+TEST(HertzSphere, VertexPatchesOnTheSymmetryPlanes)
+{
+  auto         scene   = sphere_with_patches(0.3);
+  const auto  &surface = scene->surface(0);
+  unsigned int on_x = 0, on_z = 0, corner = 0;
+  double       along_x = 0, along_z = 0;
+  for (unsigned int j = 0; j < surface.n_elements(); ++j)
+    {
+      const auto &e = surface.element(j);
+      ASSERT_NEAR(e.tangents[0][0], 1.0, 1e-15);
+      ASSERT_NEAR(e.tangents[1][2], 1.0, 1e-15);
+      const dealii::Point<3> x = patch_vertex(surface, e);
+      if (std::abs(x[0]) < 1e-12)
+        {
+          EXPECT_EQ(scene->tangential_traction(j, 0), 0.0) << x;
+          along_z =
+            std::max(along_z, std::abs(scene->tangential_traction(j, 1)));
+          ++on_x;
+        }
+      if (std::abs(x[2]) < 1e-12)
+        {
+          EXPECT_EQ(scene->tangential_traction(j, 1), 0.0) << x;
+          along_x =
+            std::max(along_x, std::abs(scene->tangential_traction(j, 0)));
+          ++on_z;
+        }
+      corner += (std::abs(x[0]) < 1e-12 && std::abs(x[2]) < 1e-12) ? 1 : 0;
+    }
+  EXPECT_EQ(corner, 1u);
+  EXPECT_GT(on_x, 5u);
+  EXPECT_GT(on_z, 5u);
+  // The tangential tractions along the planes are those of a frictional
+  // contact: of the order of mu p0 = 2 600 MPa, not zero.
+  EXPECT_GT(along_x, 100.0);
+  EXPECT_GT(along_z, 100.0);
 }
