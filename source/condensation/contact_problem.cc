@@ -133,6 +133,10 @@ namespace dpana
 
 
 
+    // A held component T_k is zero at the solution only if the friction set
+    // is symmetric under T_k -> -T_k: the disc always, the polygon of s
+    // sides (facet normals at the angles 2 pi i / s from tau_1) under T_2 ->
+    // -T_2 for every s, under T_1 -> -T_1 only for even s.
     void
     hold_tangential_tractions(contact::ContactProblem         &problem,
                               const std::vector<unsigned int> &unknowns)
@@ -140,6 +144,14 @@ namespace dpana
       for (const unsigned int t : unknowns)
         {
           Assert(t % problem.dim != 0, dealii::ExcInternalError());
+          if (problem.cone == contact::ConeModel::polygon &&
+              problem.polygon_sides % 2 == 1 && t % problem.dim == 1)
+            throw InputError(
+              "Contact / Polygon sides = " +
+              std::to_string(problem.polygon_sides) +
+              ": patches around vertices on a symmetry plane across tau_1 "
+              "need a friction polygon symmetric under T_1 -> -T_1, an even "
+              "number of sides");
           const double diagonal = problem.A(t, t);
           problem.A.row(t).setZero();
           problem.A.col(t).setZero();

@@ -71,8 +71,9 @@ namespace dpana
 
     namespace
     {
-      // The pieces of face f nearer to its vertex k than to its other
-      // vertices (group_around_vertices()).
+      // The pieces of face f in the median dual cell of its vertex k
+      // (group_around_vertices()), each with the vertex as its first corner
+      // (in 3D also with the orientation of f, for the output).
       template <int dim>
       std::vector<FacePiece<dim>>
       pieces_at_vertex(const unsigned int f, const unsigned int k)
@@ -85,13 +86,11 @@ namespace dpana
         else
           {
             std::vector<FacePiece<dim>> pieces;
-            for (const unsigned int j : {(k + 1) % 3, (k + 2) % 3})
-              {
-                std::array<double, dim> midpoint{};
-                midpoint[k] = midpoint[j] = 0.5;
-                pieces.push_back(
-                  FacePiece<dim>{f, {{vertex, midpoint, centroid}}});
-              }
+            std::array<double, dim>     m_kj{}, m_kl{};
+            m_kj[k] = m_kj[(k + 1) % 3] = 0.5;
+            m_kl[k] = m_kl[(k + 2) % 3] = 0.5;
+            pieces.push_back(FacePiece<dim>{f, {{vertex, m_kj, centroid}}});
+            pieces.push_back(FacePiece<dim>{f, {{vertex, centroid, m_kl}}});
             return pieces;
           }
       }
@@ -101,14 +100,14 @@ namespace dpana
 
     // @sect3{Patches around the vertices}
     //
-    // Every vertex of the candidate faces carries one element, made of the
-    // parts of the faces next to it that lie nearer to it than to the other
-    // vertices of the face (the median dual cell of the surface mesh):
+    // Every vertex of the candidate faces carries one element, its median
+    // dual cell on the surface mesh:
     // - 2D: the half of edge f next to its vertex k, with the corners e_k
     //   and (1/2, 1/2) in the barycentric coordinates of f;
     // - 3D: the quadrilateral of triangle f between its vertex k, the
     //   midpoints of the two edges at k and the centroid, as the two
-    //   triangles (e_k, m_kj, c) and (e_k, m_kl, c), each a sixth of f.
+    //   triangles (e_k, m_kj, c) and (e_k, c, m_kl), j = k + 1, l = k + 2
+    //   (mod 3), each a sixth of f.
     // The first corner of every piece is the vertex
     // (condensation::tangentially_held_unknowns() reads it there). The elements
     // are numbered along the surface (by the tangential coordinates of their

@@ -60,10 +60,10 @@ namespace dpana
         "The parts of Gamma_c that carry one constant traction. faces: "
         "groups of Faces per contact element adjacent faces (the reference "
         "formulation). vertices (Faces per contact element = 0): one "
-        "element around each vertex of Gamma_c, made of the parts of the "
-        "faces next to it nearer to it than to their other vertices (in 2D "
-        "the halves of the edges next to it); as many tractions as surface "
-        "vertices, the "
+        "element around each vertex of Gamma_c, its median dual cell (in 2D "
+        "the halves of the edges next to it; in 3D the part of each "
+        "triangle at it bounded by the midpoints of its two edges there and "
+        "its centroid); as many tractions as surface vertices, the "
         "traction form of nodal contact conditions, more accurate per "
         "degree of freedom on coarse meshes.");
       prm.declare_entry("Contact direction",

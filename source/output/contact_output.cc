@@ -64,10 +64,10 @@ namespace dpana
 
     namespace
     {
-      // The pieces of faces of the contact elements (whole faces, or half
-      // edges around vertices) as a mesh of their own: each piece keeps its
-      // own vertices, so that values constant per element show as such, and
-      // the index of its element as the material id of its cell.
+      // The pieces of faces of the contact elements (whole faces, or the
+      // pieces of the patches around vertices) as a mesh of their own: each
+      // piece keeps its own vertices, so that values constant per element show
+      // as such, and the index of its element as the material id of its cell.
       template <int dim>
       void
       make_piece_mesh(const contact_surface::ContactSurface<dim> &surface,

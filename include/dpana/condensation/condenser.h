@@ -265,6 +265,14 @@ namespace dpana
 
     private:
       /**
+       * The fictitious supports of the free rigid motions among the free
+       * degrees of freedom @p free; with patches around the vertices, off
+       * the candidate contact surface where possible.
+       */
+      std::vector<unsigned int>
+      choose_supports(const std::vector<unsigned int> &free) const;
+
+      /**
        * The degrees of freedom of the nonzero rows of V.
        */
       std::vector<unsigned int>

@@ -81,9 +81,11 @@ namespace dpana
      * D and their columns of the equilibrium rows G (so that the rigid
      * motion of a floating body does not enter their tangential
      * displacement). Such a tangential displacement is then u_t = A_tt T_t,
-     * which the Coulomb law allows only with T_t = 0 and u_t = 0 (stick
-     * while in contact), and the other unknowns solve the problem without
-     * these tractions.
+     * and since the friction set is symmetric under T_t -> -T_t the Coulomb
+     * law allows only T_t = 0 and u_t = 0 (no slip across the symmetry
+     * plane); the other unknowns solve the problem without these tractions.
+     * Throws dpana::InputError for a friction polygon of an odd number of
+     * sides and a held T_1, which that polygon is not symmetric in.
      */
     void
     hold_tangential_tractions(contact::ContactProblem         &problem,

@@ -112,7 +112,10 @@ namespace dpana
 
       /**
        * The piece as a flat face of its own: the face @p F with the piece's
-       * corners, centroid and area (its cell, normal and dofs are F's).
+       * corners as points, its centroid and its area. The rest is F's (cell,
+       * normal, and the vertex keys and dofs of F's vertices, which do not
+       * belong to the piece's corners): a face to integrate over, not one
+       * of the mesh.
        */
       Face<dim>
       as_face(const Face<dim> &F) const;
