@@ -73,7 +73,12 @@ namespace dpana
                         "obstacle) used by every contact element, e.g. "
                         "'0, -1': the normal of the tangent plane of an "
                         "increasing (Hertz) problem. Empty: each element "
-                        "uses the mean outward normal of its faces.");
+                        "uses the mean outward normal of its faces. Give it "
+                        "for a half or quarter model on a rigid plane, whose "
+                        "candidate surface leans away from the symmetry "
+                        "planes: without it the quarter sphere of "
+                        "prm/hertz_sphere_rigid.prm gives N_max 3.6 times "
+                        "Hertz's p0.");
       prm.declare_entry("Obstacle point",
                         "",
                         Anything(),
