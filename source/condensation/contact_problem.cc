@@ -63,6 +63,20 @@ namespace dpana
 
 
 
+    template <int dim>
+    bool
+    held_to_zero(const Body<dim> &body, const dealii::types::global_dof_index i)
+    {
+      const auto &constraints = body.constraints();
+      const auto &stored      = constraints.get_local_lines();
+      return (stored.size() == 0 || stored.is_element(i)) &&
+             constraints.is_constrained(i) &&
+             !constraints.is_inhomogeneously_constrained(i) &&
+             constraints.get_constraint_entries(i)->empty();
+    }
+
+
+
     // @sect3{Patches on symmetry lines and planes}
     //
     // The vertex of a patch is the corner of its first piece at which the
@@ -82,14 +96,6 @@ namespace dpana
       using contact_surface::ElementShape;
       if (surface.options().shape != ElementShape::vertex_patches)
         return {};
-      const auto &constraints  = body.constraints();
-      const auto &stored       = constraints.get_local_lines();
-      const auto  held_to_zero = [&](const dealii::types::global_dof_index i) {
-        return (stored.size() == 0 || stored.is_element(i)) &&
-               constraints.is_constrained(i) &&
-               !constraints.is_inhomogeneously_constrained(i) &&
-               constraints.get_constraint_entries(i)->empty();
-      };
       const auto               &faces = surface.get_faces();
       std::vector<unsigned int> held(dim * surface.n_elements(), 0);
       for (unsigned int j = 0; j < surface.n_elements(); ++j)
@@ -103,7 +109,7 @@ namespace dpana
           AssertThrow(v < dim, dealii::ExcInternalError());
           unsigned int n_held = 0;
           for (unsigned int c = 0; c < dim; ++c)
-            if (held_to_zero(F.dofs[dim * v + c]))
+            if (held_to_zero(body, F.dofs[dim * v + c]))
               {
                 ++n_held;
                 for (unsigned int k = 0; k + 1 < dim; ++k)
@@ -188,6 +194,10 @@ namespace dpana
                              const double,
                              const contact::ConeModel,
                              const unsigned int);
+    template bool
+    held_to_zero(const Body<2> &, const dealii::types::global_dof_index);
+    template bool
+    held_to_zero(const Body<3> &, const dealii::types::global_dof_index);
     template std::vector<unsigned int>
     tangentially_held_unknowns(const Body<2> &,
                                const contact_surface::ContactSurface<2> &);

@@ -52,6 +52,16 @@ namespace dpana
       const unsigned int                          polygon_sides);
 
     /**
+     * Whether a constraint of @p body sets its degree of freedom @p i to zero
+     * by a condition without entries: a symmetry plane normal to a
+     * coordinate axis, or a fixed component.
+     */
+    template <int dim>
+    bool
+    held_to_zero(const Body<dim>                      &body,
+                 const dealii::types::global_dof_index i);
+
+    /**
      * Patches around the vertices (ContactSurface with
      * ElementShape::vertex_patches): the tangential unknowns (index
      * dim j + 1 + k for the tangent tau_k of element j) whose vertex has its
