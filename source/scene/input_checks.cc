@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
+#include <dpana/condensation/contact_problem.h>
 #include <dpana/contact/feasibility.h>
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/input_checks.h>
@@ -112,6 +113,30 @@ namespace dpana
 
 
 
+    // The mean normal against the held axes (input_checks.h), vertex by
+    // vertex of the candidate faces.
+    template <int dim>
+    std::string
+    leaning_axes(const Body<dim>                            &body,
+                 const contact_surface::ContactSurface<dim> &surface)
+    {
+      std::string axes;
+      const auto  n = surface.surface_normal();
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          bool held = false;
+          for (const auto &F : surface.get_faces())
+            for (unsigned int v = 0; v < dim; ++v)
+              held =
+                held || condensation::held_to_zero(body, F.dofs[dim * v + c]);
+          if (held && std::abs(n[c]) > 1e-3)
+            axes += (axes.empty() ? "" : " and ") + std::string(1, "xyz"[c]);
+        }
+      return axes;
+    }
+
+
+
     template void
     check_held_by_contact(const std::vector<std::unique_ptr<Body<2>>> &,
                           const contact::ContactProblem &);
@@ -124,5 +149,9 @@ namespace dpana
     template void
     check_contact_boundaries_free(const std::vector<std::unique_ptr<Body<3>>> &,
                                   const std::array<std::string, 2> &);
+    template std::string
+    leaning_axes(const Body<2> &, const contact_surface::ContactSurface<2> &);
+    template std::string
+    leaning_axes(const Body<3> &, const contact_surface::ContactSurface<3> &);
   } // namespace scene
 } // namespace dpana

@@ -15,7 +15,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -28,35 +27,6 @@ namespace dpana
   {
     namespace
     {
-      // One body on the rigid plane without a contact direction: the
-      // coordinate axes along which the mean outward normal of the candidate
-      // surface leans (|n_c| > 1e-3) while vertices of the surface are held
-      // along them (u_c = 0: a symmetry plane normal to the axis, or a fixed
-      // side). A half or quarter model leans away from its symmetry planes
-      // that way and needs the contact direction: without it the quarter
-      // sphere of prm/hertz_sphere_rigid.prm gives 3.6 times Hertz's p0.
-      template <int dim>
-      std::string
-      leaning_axes(const Body<dim>                            &body,
-                   const contact_surface::ContactSurface<dim> &surface)
-      {
-        std::string axes;
-        const auto  n = surface.surface_normal();
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            bool held = false;
-            for (const auto &F : surface.get_faces())
-              for (unsigned int v = 0; v < dim; ++v)
-                held =
-                  held || condensation::held_to_zero(body, F.dofs[dim * v + c]);
-            if (held && std::abs(n[c]) > 1e-3)
-              axes += (axes.empty() ? "" : " and ") + std::string(1, "xyz"[c]);
-          }
-        return axes;
-      }
-
-
-
       // The table of the contact elements in an output directory, which
       // write_contact_output() writes and the plot reads.
       const std::string contact_csv = "/contact.csv";

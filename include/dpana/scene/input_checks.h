@@ -6,6 +6,7 @@
 
 #include <dpana/body/body.h>
 #include <dpana/contact/problem.h>
+#include <dpana/contact_surface/contact_surface.h>
 
 #include <array>
 #include <memory>
@@ -51,6 +52,21 @@ namespace dpana
     check_contact_boundaries_free(
       const std::vector<std::unique_ptr<Body<dim>>> &bodies,
       const std::array<std::string, 2>              &contact_boundaries);
+
+    /**
+     * One body on the rigid plane without a contact direction: the
+     * coordinate axes ("x and z") along which the mean outward normal of
+     * its candidate surface @p surface leans (|n_c| > 1e-3) while vertices
+     * of that surface are held along them (u_c = 0: a symmetry plane normal
+     * to the axis, or a fixed side); empty if none. A half or quarter model
+     * leans away from its symmetry planes that way and needs the contact
+     * direction: without it the quarter sphere of
+     * prm/hertz_sphere_rigid.prm gives 3.6 times Hertz's p0.
+     */
+    template <int dim>
+    std::string
+    leaning_axes(const Body<dim>                            &body,
+                 const contact_surface::ContactSurface<dim> &surface);
   } // namespace scene
 } // namespace dpana
 
