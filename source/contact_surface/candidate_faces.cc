@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <tuple>
 
 namespace dpana
@@ -154,9 +155,8 @@ namespace dpana
 
     // The faces of the contact boundary whose centroid lies in the box
     // |x_d - x0_d| <= w of the candidate region (w <= 0: the whole
-    // boundary). The vertices of the faces left out are kept: an element
-    // that touches one lies at an open edge of the candidate surface. On
-    // several ranks each rank visits the cells of its subdomain.
+    // boundary). On several ranks each rank visits the cells of its
+    // subdomain.
     template <int dim>
     void
     ContactSurface<dim>::collect_faces(const dealii::DoFHandler<dim> &dofs,
@@ -191,12 +191,9 @@ namespace dpana
         candidates = gather(candidates, communicator);
 
       faces.clear();
-      excluded_vertices.clear();
       for (const auto &[F, inside] : candidates)
         if (inside)
           faces.push_back(F);
-        else
-          excluded_vertices.insert(F.vertices.begin(), F.vertices.end());
       if (faces.empty())
         throw InputError(opts.body + ": no face of the contact boundary '" +
                          opts.boundary +
@@ -207,6 +204,69 @@ namespace dpana
 
 
 
+    // @sect3{Open edges of the candidate surface}
+    //
+    // Contact that reaches the edge of the candidate surface may have been
+    // cut short by it, but only where the surface of the body goes on
+    // towards the obstacle. So a vertex of the candidate surface lies at an
+    // open edge if it is a vertex of a boundary face outside the candidate
+    // surface (of any boundary: the same one cut by the candidate region,
+    // or the next one of the mesh, as the rest of a sphere beyond its
+    // contact cap) whose outward normal faces the obstacle, n_F . n >
+    // cos 87 deg. A face at a right angle to n ends the body's surface
+    // towards the obstacle: the side of a block, a symmetry plane (on which
+    // a half model's mean normal leans away, n_F . n < 0). Contact may
+    // reach those. Each rank visits the faces of its subdomain; the
+    // vertices found are gathered on every rank.
+    template <int dim>
+    void
+    ContactSurface<dim>::find_open_edges(const dealii::DoFHandler<dim> &dofs,
+                                         const MPI_Comm communicator)
+    {
+      const double       facing = std::cos(87.0 / 180.0 * M_PI);
+      const bool         mpi    = dealii::Utilities::MPI::job_supports_mpi();
+      const unsigned int n_ranks =
+        mpi ? dealii::Utilities::MPI::n_mpi_processes(communicator) : 1;
+      const unsigned int rank =
+        mpi ? dealii::Utilities::MPI::this_mpi_process(communicator) : 0;
+
+      std::set<std::pair<dealii::CellId, unsigned int>> candidate;
+      std::set<dealii::types::global_dof_index>         surface_vertices;
+      for (const auto &F : faces)
+        {
+          candidate.emplace(F.cell, F.face_no);
+          surface_vertices.insert(F.vertices.begin(), F.vertices.end());
+        }
+      std::vector<dealii::types::global_dof_index> open;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (n_ranks == 1 || cell->subdomain_id() == rank)
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                candidate.count({cell->id(), f}) == 0)
+              {
+                const Face<dim> F = make_face<dim>(cell, f);
+                if (F.normal * n_surface > facing)
+                  for (const auto v : F.vertices)
+                    if (surface_vertices.count(v))
+                      open.push_back(v);
+              }
+      open_edge_vertices.clear();
+      if (n_ranks > 1)
+        for (const auto &part :
+             dealii::Utilities::MPI::all_gather(communicator, open))
+          open_edge_vertices.insert(part.begin(), part.end());
+      else
+        open_edge_vertices.insert(open.begin(), open.end());
+    }
+
+
+
+    template void
+    ContactSurface<2>::find_open_edges(const dealii::DoFHandler<2> &,
+                                       const MPI_Comm);
+    template void
+    ContactSurface<3>::find_open_edges(const dealii::DoFHandler<3> &,
+                                       const MPI_Comm);
     template void
     ContactSurface<2>::collect_faces(const dealii::DoFHandler<2> &,
                                      const double,

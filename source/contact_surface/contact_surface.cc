@@ -171,6 +171,7 @@ namespace dpana
             "' faces away from the contact direction; reduce the candidate "
             "region (parameter Contact / Candidate half width)");
       tau_surface = tangential_frame(n_surface);
+      find_open_edges(dofs, communicator);
       if (opts.shape == ElementShape::vertex_patches)
         group_around_vertices();
       else
@@ -242,11 +243,11 @@ namespace dpana
                   e.t_min = std::min(e.t_min, x * tau_surface[dim - 2]);
                   e.t_max = std::max(e.t_max, x * tau_surface[dim - 2]);
                 }
-              // The corners at vertices of the face: is one of them also a
-              // vertex of a face left out of the candidate surface?
+              // The corners at vertices of the face: is one of them at an
+              // open edge of the candidate surface?
               for (const auto &lambda : piece.corners)
                 for (unsigned int v = 0; v < dim; ++v)
-                  if (lambda[v] == 1 && excluded_vertices.count(F.vertices[v]))
+                  if (lambda[v] == 1 && open_edge_vertices.count(F.vertices[v]))
                     e.at_open_edge = true;
             }
           e.centroid /= e.area;

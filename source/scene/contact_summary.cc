@@ -204,8 +204,11 @@ namespace dpana
                "point, along the contact normal): "
             << summary.estimates.approach << " mm" << std::endl;
       if (summary.candidate_edge_warning)
-        out << "WARNING: the contact zone reaches the edge of the candidate "
-               "surface; enlarge Contact / Candidate half width"
+        out << "WARNING: the contact zone reaches an edge of the candidate "
+               "surface beyond which the body's surface goes on towards the "
+               "obstacle; enlarge the candidate region (Contact / Candidate "
+               "half width) or, if it holds the whole contact boundary, that "
+               "boundary in the mesh"
             << std::endl;
       for (const auto &c : summary.comparisons)
         out << c.text << std::endl;

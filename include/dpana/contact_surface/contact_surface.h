@@ -173,9 +173,10 @@ namespace dpana
       double                                      gap_integral = 0;
       double                                      s = 0, s_min = 0, s_max = 0;
       double                                      t = 0, t_min = 0, t_max = 0;
-      // True if the element touches a face of the same boundary that was
-      // left out of the candidate surface: contact reaching such an element
-      // means that the candidate surface may be too small.
+      // True if the element touches a boundary face outside the candidate
+      // surface that faces the obstacle (find_open_edges()): contact
+      // reaching such an element means that the candidate surface may be
+      // too small.
       bool at_open_edge = false;
 
       double
@@ -401,12 +402,15 @@ namespace dpana
       std::vector<ContactElement<dim>>            elements;
       dealii::Tensor<1, dim>                      n_surface;
       std::array<dealii::Tensor<1, dim>, dim - 1> tau_surface;
-      std::set<unsigned int>                      excluded_vertices;
+      std::set<dealii::types::global_dof_index>   open_edge_vertices;
 
       void
       collect_faces(const dealii::DoFHandler<dim> &dofs,
                     const double                   w,
                     const MPI_Comm                 communicator);
+      void
+      find_open_edges(const dealii::DoFHandler<dim> &dofs,
+                      const MPI_Comm                 communicator);
       void
       group_faces();
       void

@@ -569,3 +569,29 @@ TEST(HertzSphere, MissingContactDirectionOnTheQuarterModelIsWarned)
         }
     }
 }
+
+
+
+// The candidate surface of the quarter sphere is the whole named boundary
+// "contact", a cap of radius 6 mm around the contact point; beyond it the
+// boundary "sphere" goes on towards the plane. Under four times the load
+// the Hertz radius (3PR/4E*)^(1/3) grows by 4^(1/3) from 4.05 to 6.43 mm,
+// past the cap: the summary warns. Under the scene's load it does not,
+// although contact reaches the symmetry planes, which meet the cap at a
+// right angle.
+TEST(HertzSphere, ContactBeyondTheNamedCapIsWarned)
+{
+  for (const double factor : {1.0, 4.0})
+    {
+      std::string       prm   = sphere_prm(sphere_mesh(0), 0);
+      const std::string entry = "0, -75000, 0";
+      prm.replace(prm.find(entry),
+                  entry.size(),
+                  "0, " + std::to_string(-75000 * factor) + ", 0");
+      auto scene = dpana::test::make_scene<3>(prm);
+      scene->run(false);
+      ASSERT_TRUE(scene->summary().result.converged);
+      EXPECT_EQ(scene->summary().candidate_edge_warning, factor > 1)
+        << "load factor " << factor;
+    }
+}
