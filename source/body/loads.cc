@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 
+#include <dpana/base/exceptions.h>
 #include <dpana/body/loads.h>
 #include <dpana/parameters/list_syntax.h>
 
@@ -9,8 +10,30 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <set>
+
 namespace dpana
 {
+  namespace
+  {
+    // The items of a list of loads on boundaries, each boundary once: a
+    // boundary named twice would get the sum of its items, silently.
+    std::vector<parameters::KeyValue>
+    boundary_items(const std::string &entry, const std::string &parameter)
+    {
+      const auto items = parameters::split_key_value_list(entry, parameter);
+      std::set<std::string> seen;
+      for (const auto &item : items)
+        if (!seen.insert(item.key).second)
+          throw InputError(parameter + ": boundary '" + item.key +
+                           "' is named twice (its items would add up); give "
+                           "one item per boundary");
+      return items;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Loads<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -60,15 +83,13 @@ namespace dpana
     body_force.reset();
 
     const std::string p_pressure = path + " / Pressure";
-    for (const auto &item :
-         parameters::split_key_value_list(prm.get("Pressure"), p_pressure))
+    for (const auto &item : boundary_items(prm.get("Pressure"), p_pressure))
       pressure.push_back({item.key,
                           parameters::parse_double(item.value, p_pressure),
                           p_pressure});
 
     const std::string p_traction = path + " / Traction";
-    for (const auto &item :
-         parameters::split_key_value_list(prm.get("Traction"), p_traction))
+    for (const auto &item : boundary_items(prm.get("Traction"), p_traction))
       traction.push_back({item.key,
                           parameters::parse_vector<dim>(item.value, p_traction),
                           p_traction});

@@ -227,10 +227,22 @@ namespace dpana
       const unsigned int    n = problem.n_elements();
       const FrictionSet     set(problem);
       const Eigen::VectorXd rho = residual_rho(problem);
-      // Tolerances: tractions relative to ||r||_inf, displacements (times
-      // rho_j, a traction) relative to the scale of the shared residual.
+      // Tolerances: tractions relative to the larger of ||r||_inf and
+      // ||rho D^+||_inf (the tractions the loads stand for, the load part
+      // of S(r)), displacements (times rho_j, a traction) relative to the
+      // scale of the shared residual. The load part keeps round-off from
+      // being taken for contact where the answer is r = 0: a block pressed
+      // only sideways, which lifts off, had -N of 1e-12 MPa counted as
+      // contact on half its base.
+      double load = 0.0;
+      for (Eigen::Index i = 0; i < problem.D.size(); ++i)
+        load = std::max(load,
+                        rho[i / d] * std::abs((i % d == 0) ?
+                                                std::max(problem.D[i], 0.0) :
+                                                problem.D[i]));
       const double traction_tolerance =
-        tolerance * (r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0);
+        tolerance *
+        std::max(r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0, load);
       const double scale = tolerance * residual_scale(problem, rho, r);
       std::vector<ContactStatus> status(n, ContactStatus::separated);
       for (unsigned int j = 0; j < n; ++j)

@@ -3,6 +3,7 @@
 #include <dpana/contact/solver.h>
 #include <dpana/contact/splitting.h>
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <utility>
@@ -36,10 +37,14 @@ namespace dpana
         result.figures = compute_residual_from_u(
           problem, set, residual_rho(problem), result.r, result.u);
         result.residual = result.figures.natural_map;
-        result.status   = classify(problem,
+        // A solution to the relative residual tol has a sticking element
+        // slide by up to tol S(r) / rho_j: below tau = tol it is told from
+        // a slipping one (residual.h), so tau is at least tol.
+        result.status = classify(problem,
                                  result.r,
                                  result.u,
-                                 options.classification_tolerance);
+                                 std::max(options.classification_tolerance,
+                                          options.tolerance));
       }
 
 

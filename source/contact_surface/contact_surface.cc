@@ -204,7 +204,9 @@ namespace dpana
           for (const auto &piece : e.pieces)
             n += piece.fraction() * faces[piece.face].area *
                  faces[piece.face].normal;
-          e.normal   = opts.direction.norm() > 0 ? n_surface : n / n.norm();
+          e.normal   = (opts.direction.norm() > 0 || opts.rigid_plane) ?
+                         n_surface :
+                         n / n.norm();
           e.tangents = tangential_frame(e.normal);
 
           e.area     = 0;
@@ -263,14 +265,24 @@ namespace dpana
 
     // @sect3{The gap to a rigid plane}
     //
-    // The gap is linear on each face, so the rule of the element (one point
-    // at the centroid of each piece of face) integrates it exactly.
+    // The obstacle is the plane through @p point normal to the surface
+    // normal: every element of a surface on the rigid plane has that normal
+    // (the contact direction, or without one the mean outward normal of the
+    // candidate faces, Options::rigid_plane). With each element's own
+    // normal the "plane" would be the one through the point normal to that
+    // element, a different one per element: on a full disc without a
+    // direction every gap but the lowest came out negative. The gap is
+    // linear on each face, so the rule of the element (one point at the
+    // centroid of each piece of face) integrates it exactly.
     template <int dim>
     void
     ContactSurface<dim>::set_plane_gap(const dealii::Point<dim> &point)
     {
       for (auto &e : elements)
         {
+          Assert((e.normal - n_surface).norm() < 1e-12,
+                 dealii::ExcMessage("An element of a surface on the rigid "
+                                    "plane without the plane's normal."));
           e.gap_integral = 0;
           for (const auto &p : e.points)
             e.gap_integral += p.weight * ((point - p.x) * e.normal);

@@ -72,13 +72,16 @@ namespace dpana
                         "Unit normal n (pointing out of Body 1 towards the "
                         "obstacle) used by every contact element, e.g. "
                         "'0, -1': the normal of the tangent plane of an "
-                        "increasing (Hertz) problem. Empty: each element "
-                        "uses the mean outward normal of its faces. Give it "
-                        "for a half or quarter model on a rigid plane, whose "
+                        "increasing (Hertz) problem. Empty: on the rigid "
+                        "plane every element uses the mean outward normal "
+                        "of the candidate faces (the plane's normal); "
+                        "between two bodies each element uses the mean "
+                        "outward normal of its own faces. Give it for a "
+                        "half or quarter model on a rigid plane, whose "
                         "candidate surface leans away from the symmetry "
                         "planes: without it the quarter sphere of "
-                        "prm/hertz_sphere_rigid.prm gives N_max 3.6 times "
-                        "Hertz's p0.");
+                        "prm/hertz_sphere_rigid.prm gives N_max 1.45 times "
+                        "Hertz's p0 and a_m 70 % too large.");
       prm.declare_entry("Obstacle point",
                         "",
                         Anything(),

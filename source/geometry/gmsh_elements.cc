@@ -148,6 +148,16 @@ namespace dpana
             std::array<const std::array<double, 3> *, 4> p;
             for (unsigned int k = 0; k <= dim; ++k)
               p[k] = &nodes.x[position[k]];
+            // A 2D mesh lies in the plane z = 0: the triangles of a 3D
+            // mesh's boundary would otherwise be read with z dropped.
+            for (unsigned int k = 0; dim == 2 && k <= dim; ++k)
+              if (std::abs((*p[k])[2]) >
+                  1e-9 * (1 + std::abs((*p[k])[0]) + std::abs((*p[k])[1])))
+                lines.fail("element " + std::to_string(tag) +
+                           " (a triangle) has a node at z = " +
+                           std::to_string((*p[k])[2]) +
+                           ": a 2D mesh lies in the plane z = 0 (a 3D mesh "
+                           "needs Dimension = 3)");
             if (degenerate(p, dim))
               lines.fail("element " + std::to_string(tag) + " (a " +
                          (dim == 2 ? "triangle) has zero area" :

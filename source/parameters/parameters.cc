@@ -171,7 +171,8 @@ namespace dpana
                    const FileOutline &outline,
                    const unsigned int n_bodies_line,
                    const unsigned int body_2_line,
-                   const unsigned int boundary_2_line)
+                   const unsigned int boundary_2_line,
+                   const unsigned int obstacle_point_line)
       {
         if (outline.n_bodies == 2 && body_2_line == 0)
           throw InputError(where(filename, n_bodies_line) +
@@ -186,6 +187,12 @@ namespace dpana
                            "Contact / Boundary 2 is set in a run with one "
                            "body, whose obstacle is the rigid plane (set "
                            "Number of bodies = 2 for a second body)");
+        if (outline.n_bodies == 2 && obstacle_point_line != 0)
+          throw InputError(where(filename, obstacle_point_line) +
+                           "Contact / Obstacle point is set in a run with two "
+                           "bodies, whose gap is the distance between their "
+                           "surfaces; the point places the rigid plane of a "
+                           "run with one body (leave it empty)");
       }
     } // namespace
 
@@ -211,7 +218,8 @@ namespace dpana
                          " sets nothing (it is empty or all comments)");
       FileOutline              outline;
       std::vector<std::string> path;
-      unsigned int n_bodies_line = 0, body_2_line = 0, boundary_2_line = 0;
+      unsigned int n_bodies_line = 0, body_2_line = 0, boundary_2_line = 0,
+                   obstacle_point_line = 0;
       for (const Statement &s : statements)
         if (is_keyword(s, "subsection"))
           {
@@ -227,6 +235,11 @@ namespace dpana
         else if (is_keyword(s, "set") && path.size() == 1 &&
                  path[0] == "Contact" && entry_of(s).first == "Boundary 2")
           boundary_2_line = s.line;
+        else if (is_keyword(s, "set") && path.size() == 1 &&
+                 path[0] == "Contact" &&
+                 entry_of(s).first == "Obstacle point" &&
+                 !entry_of(s).second.empty())
+          obstacle_point_line = s.line;
         else if (is_keyword(s, "set") && path.empty())
           {
             const auto [name, value] = entry_of(s);
@@ -248,8 +261,12 @@ namespace dpana
                 n_bodies_line    = s.line;
               }
           }
-      check_bodies(
-        filename, outline, n_bodies_line, body_2_line, boundary_2_line);
+      check_bodies(filename,
+                   outline,
+                   n_bodies_line,
+                   body_2_line,
+                   boundary_2_line,
+                   obstacle_point_line);
       return outline;
     }
 

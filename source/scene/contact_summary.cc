@@ -150,7 +150,8 @@ namespace dpana
     summarise(const contact_surface::ContactSurface<dim> &surface,
               const contact::ContactProblem              &problem,
               const dealii::Point<dim>                   &centre,
-              ContactSummary                             &summary)
+              ContactSummary                             &summary,
+              const bool symmetric_about_centre)
     {
       const auto &res    = summary.result;
       summary.n_elements = surface.n_elements();
@@ -170,7 +171,8 @@ namespace dpana
       if (dim == 2)
         summary.estimates =
           estimate_pressure_profile(pressure_elements(surface, res.r),
-                                    centre * surface.surface_tangents()[0]);
+                                    centre * surface.surface_tangents()[0],
+                                    symmetric_about_centre);
     }
 
 
@@ -220,11 +222,13 @@ namespace dpana
     summarise(const contact_surface::ContactSurface<2> &,
               const contact::ContactProblem &,
               const dealii::Point<2> &,
-              ContactSummary &);
+              ContactSummary &,
+              const bool);
     template void
     summarise(const contact_surface::ContactSurface<3> &,
               const contact::ContactProblem &,
               const dealii::Point<3> &,
-              ContactSummary &);
+              ContactSummary &,
+              const bool);
   } // namespace scene
 } // namespace dpana

@@ -7,7 +7,10 @@
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/input_checks.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -137,6 +140,68 @@ namespace dpana
 
 
 
+    template <int dim>
+    std::string
+    far_gap(const contact_surface::ContactSurface<dim> &surface)
+    {
+      if (surface.n_elements() == 0)
+        return "";
+      double gap   = std::numeric_limits<double>::max();
+      double s_min = gap, t_min = gap, s_max = -gap, t_max = -gap;
+      for (unsigned int j = 0; j < surface.n_elements(); ++j)
+        {
+          const auto &e = surface.element(j);
+          gap           = std::min(gap, e.mean_gap());
+          s_min         = std::min(s_min, e.s_min);
+          s_max         = std::max(s_max, e.s_max);
+          t_min         = std::min(t_min, e.t_min);
+          t_max         = std::max(t_max, e.t_max);
+        }
+      const double extent = std::max(s_max - s_min, t_max - t_min);
+      if (!(std::abs(gap) > 0.1 * extent))
+        return "";
+      std::ostringstream text;
+      text << std::setprecision(3) << "the closest initial gap of "
+           << surface.options().body << " is " << gap << " mm ("
+           << (gap < 0 ? "an overlap" : "apart") << "), "
+           << std::abs(gap) / extent << " times the extent " << extent
+           << " mm of its candidate surface: contact is linearised about "
+              "the initial configuration, so the answer is far outside small "
+              "displacements (is a body, Contact / Obstacle point or Contact "
+              "direction misplaced?)";
+      return text.str();
+    }
+
+
+
+    template <int dim>
+    bool
+    held_across_centre(const Body<dim>                            &body,
+                       const contact_surface::ContactSurface<dim> &surface,
+                       const dealii::Point<dim>                   &centre)
+    {
+      const auto   tau = surface.surface_tangents()[0];
+      const double s0  = centre * tau;
+      unsigned int c   = 0;
+      for (unsigned int d = 1; d < dim; ++d)
+        if (std::abs(tau[d]) > std::abs(tau[c]))
+          c = d;
+      if (!(tau[c] * tau[c] > 0.5))
+        return false;
+      double extent = 0;
+      for (const auto &F : surface.get_faces())
+        for (const auto &x : F.points)
+          extent = std::max(extent, std::abs(x * tau - s0));
+      for (const auto &F : surface.get_faces())
+        for (unsigned int v = 0; v < F.points.size(); ++v)
+          if (std::abs(F.points[v] * tau - s0) <= 1e-9 * extent &&
+              condensation::held_to_zero(body, F.dofs[dim * v + c]))
+            return true;
+      return false;
+    }
+
+
+
     template void
     check_held_by_contact(const std::vector<std::unique_ptr<Body<2>>> &,
                           const contact::ContactProblem &);
@@ -153,5 +218,17 @@ namespace dpana
     leaning_axes(const Body<2> &, const contact_surface::ContactSurface<2> &);
     template std::string
     leaning_axes(const Body<3> &, const contact_surface::ContactSurface<3> &);
+    template std::string
+    far_gap(const contact_surface::ContactSurface<2> &);
+    template std::string
+    far_gap(const contact_surface::ContactSurface<3> &);
+    template bool
+    held_across_centre(const Body<2> &,
+                       const contact_surface::ContactSurface<2> &,
+                       const dealii::Point<2> &);
+    template bool
+    held_across_centre(const Body<3> &,
+                       const contact_surface::ContactSurface<3> &,
+                       const dealii::Point<3> &);
   } // namespace scene
 } // namespace dpana

@@ -128,13 +128,16 @@ namespace dpana
 
     PressureEstimates
     estimate_pressure_profile(const std::vector<PressureElement> &elements,
-                              const double                        s0)
+                              const double                        s0,
+                              const bool symmetric_about_s0)
     {
       PressureEstimates est;
       if (elements.empty())
         return est;
-      // A surface on one side of s0 (to a round-off of its extent) is a
-      // half model.
+      // A surface on one side of s0 (to a round-off of its extent) of a body
+      // symmetric about s0 is a half model. Without the symmetry it is a
+      // whole model that lies on one side of s0 (a block from x = 0 with
+      // nothing held on x = 0): mirrored, its centroid would read 0.
       double lowest = elements[0].s_min, highest = elements[0].s_max;
       for (const auto &e : elements)
         {
@@ -143,7 +146,8 @@ namespace dpana
         }
       const double tol =
         1e-9 * std::max(std::abs(lowest - s0), std::abs(highest - s0));
-      est.mirrored = lowest - s0 > -tol || highest - s0 < tol;
+      est.mirrored =
+        symmetric_about_s0 && (lowest - s0 > -tol || highest - s0 < tol);
 
       const std::array<double, 3> m = pressure_moments(elements, s0);
       if (!(m[0] > 0))

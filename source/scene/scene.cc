@@ -277,6 +277,9 @@ namespace dpana
                          "rigid plane needs the contact direction"
                       << std::endl;
         }
+      const std::string gap = far_gap(*surfaces[0]);
+      if (!gap.empty())
+        std::cout << "        warning: " << gap << std::endl;
     }
 
 
@@ -288,10 +291,11 @@ namespace dpana
       surfaces.clear();
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
-          const auto options =
+          auto options =
             surface_parameters.surface_options(b,
                                                bodies[b]->name(),
                                                bodies[b]->boundary_names());
+          options.rigid_plane = bodies.size() == 1;
           surfaces.push_back(
             std::make_unique<contact_surface::ContactSurface<dim>>());
           if (b == 0)
@@ -407,7 +411,10 @@ namespace dpana
       summarise(*surfaces[0],
                 problem_,
                 surface_parameters.region_centre,
-                summary_);
+                summary_,
+                held_across_centre(*bodies[0],
+                                   *surfaces[0],
+                                   surface_parameters.region_centre));
       summary_.estimates.approach_measured = approach.approach_measured;
       summary_.estimates.approach          = approach.approach;
       summary_.comparisons = references.compare(bodies, *surfaces[0], summary_);

@@ -77,7 +77,8 @@
 //
 // One classification for every solver and every comparison (classify()).
 // With a relative tolerance tau (SolverOptions::classification_tolerance,
-// default 1e-8), t = tau ||r||_inf and v_j = tau S(r) / rho_j, element j is
+// default 1e-8, raised to the solver's tolerance by solve()), t = tau
+// max(||r||_inf, ||rho D^+||_inf) and v_j = tau S(r) / rho_j, element j is
 //   separated  if N_j >= -t,
 //   slip       otherwise, if it moves, ||u_T,j|| > v_j, or if its traction is
 //              on the boundary of the friction set, gamma(T_j) >= -mu_j N_j

@@ -235,8 +235,11 @@ namespace dpana
      *
      * If a contact direction is given (the normal of the tangent plane at
      * the first contact point, for the "increasing" problems of Hertz type),
-     * every element uses it; otherwise each element uses the area-weighted
-     * mean outward normal of its faces. The initial gap is measured along n:
+     * every element uses it; otherwise, on the rigid plane
+     * (Options::rigid_plane), every element uses the plane's normal, the
+     * area-weighted mean outward normal of the candidate faces, and between
+     * two bodies each element the area-weighted mean outward normal of its
+     * faces. The initial gap is measured along n:
      * to a rigid plane (set_plane_gap()) or to the paired faces of the other
      * body (pair()). The faces are flat (P1 mapping), and the gap is linear on
      * each face, so the midpoint rule integrates it exactly.
@@ -280,8 +283,14 @@ namespace dpana
         unsigned int faces_per_element = 0;
         // Groups of faces, or one patch around each vertex.
         ElementShape shape = ElementShape::face_groups;
-        // Contact direction (zero: the element's mean outward normal).
+        // Contact direction (zero: the mean outward normal of the
+        // candidate faces on the rigid plane, each element's own between
+        // two bodies).
         dealii::Tensor<1, dim> direction;
+        // The obstacle is the rigid plane (one body): without a direction
+        // every element takes the plane's normal, the mean outward normal
+        // of the candidate faces.
+        bool rigid_plane = false;
       };
 
       /**

@@ -42,7 +42,8 @@ namespace dpana
      * enters `Contact` and declares the entries of the other components of
      * a contact run there as well). Points and vectors have exactly dim
      * finite coordinates. An empty Contact direction means that every
-     * contact element uses the mean outward normal of its faces; an empty
+     * contact element uses the mean outward normal of the candidate faces
+     * on the rigid plane, and of its own faces between two bodies; an empty
      * Obstacle point means the first contact point of Body 1's candidate
      * surface (ContactSurface::first_contact_point()).
      */

@@ -80,14 +80,17 @@ namespace dpana
      * Fills @p summary (whose result is set) from the contact surface of
      * Body 1 and the contact problem: the per-element natural-map residual,
      * the half width measured from @p centre, the maximum pressure, the
-     * normal resultant, the zones and, in 2D, the pressure estimates.
+     * normal resultant, the zones and, in 2D, the pressure estimates
+     * (mirrored about the centre if @p symmetric_about_centre and the
+     * surface lies on one side of it).
      */
     template <int dim>
     void
     summarise(const contact_surface::ContactSurface<dim> &surface,
               const contact::ContactProblem              &problem,
               const dealii::Point<dim>                   &centre,
-              ContactSummary                             &summary);
+              ContactSummary                             &summary,
+              const bool symmetric_about_centre = true);
 
     /**
      * The lines of the log: half width, pressure, zones, the warning of a

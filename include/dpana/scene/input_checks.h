@@ -61,12 +61,45 @@ namespace dpana
      * to the axis, or a fixed side); empty if none. A half or quarter model
      * leans away from its symmetry planes that way and needs the contact
      * direction: without it the quarter sphere of
-     * prm/hertz_sphere_rigid.prm gives 3.6 times Hertz's p0.
+     * prm/hertz_sphere_rigid.prm gives N_max 1.45 times Hertz's p0 and a_m
+     * 70 % too large.
      */
     template <int dim>
     std::string
     leaning_axes(const Body<dim>                            &body,
                  const contact_surface::ContactSurface<dim> &surface);
+
+    /**
+     * The closest initial gap g of the candidate surface @p surface (the
+     * smallest mean gap of its elements; negative: the bodies overlap) if
+     * |g| exceeds a tenth of the surface's extent L (the largest of its
+     * extents along its tangents); empty otherwise. Contact is linearised
+     * about the initial configuration, so bodies that start that far apart
+     * move by that rigid motion, and bodies that overlap that much are
+     * pushed apart by strains of the overlap over the body: either answer
+     * is far outside small displacements, and most likely a misplaced body,
+     * Contact / Obstacle point or Contact direction. Returns the text of a
+     * warning, e.g. "the closest initial gap of Body 1 is 1000 mm, 25 times
+     * the extent 40 mm of its candidate surface".
+     */
+    template <int dim>
+    std::string
+    far_gap(const contact_surface::ContactSurface<dim> &surface);
+
+    /**
+     * Whether @p body is held across the candidate centre @p centre: a
+     * vertex of the candidate surface @p surface lies at the centre's
+     * position s0 along the tangent tau_1 (to 1e-9 of the surface's
+     * extent), and its displacement along the axis nearest tau_1 is held
+     * at zero (a symmetry line or plane through the centre). A 2D surface
+     * on one side of s0 is then the half model of a body symmetric about
+     * s0 (scene::estimate_pressure_profile()).
+     */
+    template <int dim>
+    bool
+    held_across_centre(const Body<dim>                            &body,
+                       const contact_surface::ContactSurface<dim> &surface,
+                       const dealii::Point<dim>                   &centre);
   } // namespace scene
 } // namespace dpana
 

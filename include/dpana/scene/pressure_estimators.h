@@ -24,8 +24,9 @@ namespace dpana
      * Estimates of the contact zone finer than one contact element, from a
      * piecewise constant pressure p(s) (see doc/contact.md, "Estimators of
      * the half width"). Positions are measured along s from the candidate
-     * centre s0. A surface that lies on one side of s0 is the half model of
-     * a body symmetric about s0: its pressure is mirrored about s0, and the
+     * centre s0. A surface that lies on one side of s0 and whose body is
+     * held across s0 there (a symmetry line) is the half model of a body
+     * symmetric about s0: its pressure is mirrored about s0, and the
      * resultant is that of the modelled half.
      */
     struct PressureEstimates
@@ -76,7 +77,8 @@ namespace dpana
      */
     PressureEstimates
     estimate_pressure_profile(const std::vector<PressureElement> &elements,
-                              const double                        s0);
+                              const double                        s0,
+                              const bool symmetric_about_s0 = true);
   } // namespace scene
 } // namespace dpana
 

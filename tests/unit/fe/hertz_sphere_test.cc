@@ -541,9 +541,10 @@ TEST(HertzSphere, VertexPatchesNeedAnEvenPolygon)
 
 // The quarter sphere without a contact direction: the mean outward normal
 // of its cap leans along x and z, away from the symmetry planes, on which
-// vertices of the cap are held; each element then measures its gap along
-// its own normal and the run gives N_max = 31 116 MPa, 3.6 times p0. The
-// log warns, naming both axes; with the direction it does not.
+// vertices of the cap are held; the rigid plane, normal to that mean
+// normal, then tilts, and the run gives N_max = 12 638 MPa, 1.45 times p0,
+// and a_m 70 % too large (prm/hertz_sphere_rigid.prm's mesh). The log
+// warns, naming both axes; with the direction it does not.
 TEST(HertzSphere, MissingContactDirectionOnTheQuarterModelIsWarned)
 {
   for (const bool given : {false, true})
