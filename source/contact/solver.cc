@@ -39,7 +39,8 @@ namespace dpana
         result.residual = result.figures.natural_map;
         // A solution to the relative residual tol has a sticking element
         // slide by up to tol S(r) / rho_j: below tau = tol it is told from
-        // a slipping one (residual.h), so tau is at least tol.
+        // a slipping one (residual.h), so tau is at least tol; the traction
+        // threshold of separation grows with it.
         result.status = classify(problem,
                                  result.r,
                                  result.u,

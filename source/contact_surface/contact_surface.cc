@@ -280,9 +280,10 @@ namespace dpana
     {
       for (auto &e : elements)
         {
-          Assert((e.normal - n_surface).norm() < 1e-12,
-                 dealii::ExcMessage("An element of a surface on the rigid "
-                                    "plane without the plane's normal."));
+          AssertThrow((e.normal - n_surface).norm() < 1e-12,
+                      dealii::ExcMessage("An element of a surface on the "
+                                         "rigid plane without the plane's "
+                                         "normal (Options::rigid_plane)."));
           e.gap_integral = 0;
           for (const auto &p : e.points)
             e.gap_integral += p.weight * ((point - p.x) * e.normal);

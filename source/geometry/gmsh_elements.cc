@@ -7,6 +7,8 @@
 // with their physical tags.
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "gmsh_reading.h"
 
@@ -87,6 +89,8 @@ namespace dpana
           const unsigned int dim;
           const std::string &error;
           GmshMesh          &mesh;
+          // 2D: the z of the first triangle's nodes, which all share.
+          double plane_z = std::numeric_limits<double>::quiet_NaN();
 
           // One element of gmsh type @p type with the nodes @p node_tags and
           // the physical tag @p physical: checked, and kept if it is a cell or
@@ -148,16 +152,27 @@ namespace dpana
             std::array<const std::array<double, 3> *, 4> p;
             for (unsigned int k = 0; k <= dim; ++k)
               p[k] = &nodes.x[position[k]];
-            // A 2D mesh lies in the plane z = 0: the triangles of a 3D
-            // mesh's boundary would otherwise be read with z dropped.
+            // A 2D mesh lies in one plane z = const: the boundary
+            // triangles of a 3D mesh would otherwise be read with z
+            // dropped.
             for (unsigned int k = 0; dim == 2 && k <= dim; ++k)
-              if (std::abs((*p[k])[2]) >
-                  1e-9 * (1 + std::abs((*p[k])[0]) + std::abs((*p[k])[1])))
-                lines.fail("element " + std::to_string(tag) +
-                           " (a triangle) has a node at z = " +
-                           std::to_string((*p[k])[2]) +
-                           ": a 2D mesh lies in the plane z = 0 (a 3D mesh "
-                           "needs Dimension = 3)");
+              {
+                const auto &x = *p[k];
+                if (std::isnan(plane_z))
+                  plane_z = x[2];
+                if (std::abs(x[2] - plane_z) >
+                    1e-9 *
+                      (1 + std::abs(x[0]) + std::abs(x[1]) + std::abs(plane_z)))
+                  {
+                    std::ostringstream z;
+                    z << "element " << tag
+                      << " (a triangle) has a node at z = " << x[2]
+                      << ", off the plane z = " << plane_z
+                      << " of the triangles before it: a 2D mesh lies in one "
+                         "plane (a 3D mesh needs Dimension = 3)";
+                    lines.fail(z.str());
+                  }
+              }
             if (degenerate(p, dim))
               lines.fail("element " + std::to_string(tag) + " (a " +
                          (dim == 2 ? "triangle) has zero area" :

@@ -168,7 +168,13 @@ namespace dpana
                            summary);
       summary.zones = dim == 2 ? zones_along_s(surface, res.status) :
                                  zone_boxes(surface, res.status);
-      if (dim == 2)
+      // With no element in contact the pressures are round-off: no
+      // estimates of a zone that is not there.
+      const bool in_contact =
+        std::any_of(res.status.begin(), res.status.end(), [](const auto s) {
+          return s != contact::ContactStatus::separated;
+        });
+      if (dim == 2 && in_contact)
         summary.estimates =
           estimate_pressure_profile(pressure_elements(surface, res.r),
                                     centre * surface.surface_tangents()[0],

@@ -161,14 +161,15 @@ namespace dpana
       if (!(std::abs(gap) > 0.1 * extent))
         return "";
       std::ostringstream text;
-      text << std::setprecision(3) << "the closest initial gap of "
+      text << std::setprecision(4) << "the closest initial gap of "
            << surface.options().body << " is " << gap << " mm ("
            << (gap < 0 ? "an overlap" : "apart") << "), "
            << std::abs(gap) / extent << " times the extent " << extent
-           << " mm of its candidate surface: contact is linearised about "
-              "the initial configuration, so the answer is far outside small "
-              "displacements (is a body, Contact / Obstacle point or Contact "
-              "direction misplaced?)";
+           << " mm of its candidate surface: a body, Contact / Obstacle point "
+              "or Contact direction possibly misplaced (contact is linearised "
+              "about the initial configuration: a floating body closes a "
+              "uniform gap by a rigid motion, but its displacements are then "
+              "far from small)";
       return text.str();
     }
 

@@ -73,7 +73,9 @@ namespace dpana
       // reached a new minimum (by a factor 0.99) for this many outer
       // iterations.
       unsigned int stall_iterations = 100;
-      // Tolerance of the status classification (relative to ||r||_inf).
+      // Tolerance tau of the status classification (residual.h: relative
+      // to max(||r||_inf, ||rho D^+||_inf)); a solve uses max(tau,
+      // tolerance).
       double classification_tolerance = 1e-8;
       // Equality rows handled by an augmented Lagrangian (PGS, NSGS): the
       // penalty is augmentation * trace(A) / ||G||_F^2.

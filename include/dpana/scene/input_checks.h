@@ -79,8 +79,8 @@ namespace dpana
      * pushed apart by strains of the overlap over the body: either answer
      * is far outside small displacements, and most likely a misplaced body,
      * Contact / Obstacle point or Contact direction. Returns the text of a
-     * warning, e.g. "the closest initial gap of Body 1 is 1000 mm, 25 times
-     * the extent 40 mm of its candidate surface".
+     * warning, e.g. "the closest initial gap of Body 1 is 1000 mm (apart),
+     * 25 times the extent 40 mm of its candidate surface: ...".
      */
     template <int dim>
     std::string
