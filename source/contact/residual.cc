@@ -79,20 +79,33 @@ namespace dpana
 
 
 
+    namespace
+    {
+      // Entry i of rho D^+: the load term with the gaps (negative D_N) left
+      // out, times rho_j of its element: the traction the load stands for.
+      double
+      load_traction(const ContactProblem  &problem,
+                    const Eigen::VectorXd &rho,
+                    const Eigen::Index     i)
+      {
+        const unsigned int d = problem.dim;
+        return rho[i / d] *
+               ((i % d == 0) ? std::max(problem.D[i], 0.0) : problem.D[i]);
+      }
+    } // namespace
+
+
+
     double
     residual_scale(const ContactProblem  &problem,
                    const Eigen::VectorXd &rho,
                    const Eigen::VectorXd &r)
     {
-      // ||rho D^+||: the load term with the gaps (negative D_N) left out,
-      // each element's entries times its rho_j.
-      const unsigned int d    = problem.dim;
-      double             load = 0.0;
+      // ||rho D^+||_2.
+      double load = 0.0;
       for (Eigen::Index i = 0; i < problem.D.size(); ++i)
         {
-          const double x =
-            rho[i / d] *
-            ((i % d == 0) ? std::max(problem.D[i], 0.0) : problem.D[i]);
+          const double x = load_traction(problem, rho, i);
           load += x * x;
         }
       return r.norm() + std::sqrt(load);
@@ -236,10 +249,7 @@ namespace dpana
       // contact on half its base.
       double load = 0.0;
       for (Eigen::Index i = 0; i < problem.D.size(); ++i)
-        load = std::max(load,
-                        rho[i / d] * std::abs((i % d == 0) ?
-                                                std::max(problem.D[i], 0.0) :
-                                                problem.D[i]));
+        load = std::max(load, std::abs(load_traction(problem, rho, i)));
       const double traction_tolerance =
         tolerance *
         std::max(r.size() > 0 ? r.lpNorm<Eigen::Infinity>() : 0.0, load);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <set>
 #include <tuple>
+#include <utility>
 
 namespace dpana
 {
@@ -149,6 +150,18 @@ namespace dpana
         });
         return all;
       }
+
+
+      // The number of ranks of @p communicator and this one's; a program
+      // without MPI (the tutorials) works on one process.
+      std::pair<unsigned int, unsigned int>
+      ranks(const MPI_Comm communicator)
+      {
+        if (!dealii::Utilities::MPI::job_supports_mpi())
+          return {1, 0};
+        return {dealii::Utilities::MPI::n_mpi_processes(communicator),
+                dealii::Utilities::MPI::this_mpi_process(communicator)};
+      }
     } // namespace
 
 
@@ -163,12 +176,7 @@ namespace dpana
                                        const double                   w,
                                        const MPI_Comm communicator)
     {
-      // A program without MPI (the tutorials) works on one process.
-      const bool         mpi = dealii::Utilities::MPI::job_supports_mpi();
-      const unsigned int n_ranks =
-        mpi ? dealii::Utilities::MPI::n_mpi_processes(communicator) : 1;
-      const unsigned int rank =
-        mpi ? dealii::Utilities::MPI::this_mpi_process(communicator) : 0;
+      const auto [n_ranks, rank] = ranks(communicator);
       std::vector<std::pair<Face<dim>, bool>> candidates;
       for (const auto &cell : dofs.active_cell_iterators())
         if (n_ranks == 1 || cell->subdomain_id() == rank)
@@ -223,12 +231,8 @@ namespace dpana
     ContactSurface<dim>::find_open_edges(const dealii::DoFHandler<dim> &dofs,
                                          const MPI_Comm communicator)
     {
-      const double       facing = std::cos(87.0 / 180.0 * M_PI);
-      const bool         mpi    = dealii::Utilities::MPI::job_supports_mpi();
-      const unsigned int n_ranks =
-        mpi ? dealii::Utilities::MPI::n_mpi_processes(communicator) : 1;
-      const unsigned int rank =
-        mpi ? dealii::Utilities::MPI::this_mpi_process(communicator) : 0;
+      const double facing        = std::cos(87.0 / 180.0 * M_PI);
+      const auto [n_ranks, rank] = ranks(communicator);
 
       std::set<std::pair<dealii::CellId, unsigned int>> candidate;
       std::set<dealii::types::global_dof_index>         surface_vertices;
