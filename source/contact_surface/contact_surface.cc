@@ -214,7 +214,7 @@ namespace dpana
           e.points.clear();
           e.s_min = e.t_min = std::numeric_limits<double>::max();
           e.s_max = e.t_max = -std::numeric_limits<double>::max();
-          e.at_open_edge    = false;
+          e.open_edge_points.clear();
           for (const auto &piece : e.pieces)
             {
               const auto  &F = faces[piece.face];
@@ -249,8 +249,12 @@ namespace dpana
               // open edge of the candidate surface?
               for (const auto &lambda : piece.corners)
                 for (unsigned int v = 0; v < dim; ++v)
-                  if (lambda[v] == 1 && open_edge_vertices.count(F.vertices[v]))
-                    e.at_open_edge = true;
+                  if (lambda[v] == 1 &&
+                      open_edge_vertices.count(F.vertices[v]) &&
+                      std::find(e.open_edge_points.begin(),
+                                e.open_edge_points.end(),
+                                F.points[v]) == e.open_edge_points.end())
+                    e.open_edge_points.push_back(F.points[v]);
             }
           e.centroid /= e.area;
           e.s = e.centroid * tau_surface[0];

@@ -260,6 +260,63 @@ namespace dpana
 
 
 
+      // Whether the projected face P holds the point c (its interval in 2D,
+      // its triangle in 3D, to round-off of its size).
+      template <int dim>
+      bool
+      holds(const ProjectedFace &P, const PlanePoint &c)
+      {
+        const auto  &p    = P.vertices;
+        const double size = P.box[1] - P.box[0] + P.box[3] - P.box[2];
+        if (dim == 2)
+          return c[0] >= P.box[0] - 1e-9 * size &&
+                 c[0] <= P.box[1] + 1e-9 * size;
+        const double s = cross(p[0], p[1], p[2]) > 0 ? 1 : -1;
+        for (unsigned int k = 0; k < 3; ++k)
+          if (s * cross(p[k], p[(k + 1) % 3], c) < -1e-9 * size * size)
+            return false;
+        return true;
+      }
+
+
+
+      // An open edge of the first body's candidate surface matters only if
+      // the second body's surface goes on beyond it: where the second body's
+      // contact boundary ends at that edge (a block on a foundation that is
+      // Body 1, whose candidate region the block's width bounds), the contact
+      // zone cannot grow past it, and enlarging the first body's region
+      // would leave faces without a partner. An open vertex of element e is
+      // kept if the point half-way beyond it, on the line from the element's
+      // centroid through the vertex in the tangent plane, lies on the
+      // projection Q of a face of the second body.
+      template <int dim>
+      void
+      keep_edges_with_surface_beyond(ContactElement<dim>              &e,
+                                     const std::vector<ProjectedFace> &Q)
+      {
+        const auto in_plane = [&](const dealii::Point<dim> &x) {
+          PlanePoint c{{0, 0}};
+          for (unsigned int k = 0; k < dim - 1; ++k)
+            c[k] = x * e.tangents[k];
+          return c;
+        };
+        const PlanePoint                centre = in_plane(e.centroid);
+        std::vector<dealii::Point<dim>> kept;
+        for (const auto &x : e.open_edge_points)
+          {
+            const PlanePoint v = in_plane(x);
+            const PlanePoint beyond{
+              {1.5 * v[0] - 0.5 * centre[0], 1.5 * v[1] - 0.5 * centre[1]}};
+            if (std::any_of(Q.begin(), Q.end(), [&](const ProjectedFace &P) {
+                  return holds<dim>(P, beyond);
+                }))
+              kept.push_back(x);
+          }
+        e.open_edge_points = kept;
+      }
+
+
+
       // Keep only the faces that some element uses, renumbered in the order
       // of their first use.
       template <int dim>
@@ -302,6 +359,7 @@ namespace dpana
           std::vector<ProjectedFace> Q;
           for (const auto &F : faces)
             Q.push_back(project(F, e1.tangents));
+          keep_edges_with_surface_beyond(first.elements[j], Q);
 
           e.gap_integral = 0;
           for (const auto &piece : e1.pieces)
@@ -376,7 +434,6 @@ namespace dpana
           e.faces.clear();
           e.pieces.clear();
           e.points.clear();
-          e.at_open_edge = first.elements[j].at_open_edge;
         }
       pair_projected(first);
       keep_used_faces(faces, elements);
@@ -384,12 +441,14 @@ namespace dpana
       // Centroids of this side, and the gap of the first body: the integral
       // over the element of the distance along n from its surface to this
       // one, g = (x_2 - x_1) . n (pair_projected() stored it in gap_integral).
-      // The open-edge flag is the first body's: its candidate region decides.
+      // The open edges are the first body's (its candidate region decides),
+      // as pair_projected() kept them.
       for (unsigned int j = 0; j < elements.size(); ++j)
         {
-          auto &e    = elements[j];
-          e.centroid = dealii::Point<dim>();
-          double w   = 0;
+          auto &e            = elements[j];
+          e.open_edge_points = first.elements[j].open_edge_points;
+          e.centroid         = dealii::Point<dim>();
+          double w           = 0;
           for (const auto &p : e.points)
             {
               e.centroid += p.weight * p.x;

@@ -47,7 +47,7 @@ namespace dpana
               }
             sum.half_width_centroid =
               std::max(sum.half_width_centroid, std::abs(e.s - s0));
-            if (e.at_open_edge)
+            if (e.at_open_edge())
               sum.candidate_edge_warning = true;
           }
       }

@@ -173,16 +173,24 @@ namespace dpana
       double                                      gap_integral = 0;
       double                                      s = 0, s_min = 0, s_max = 0;
       double                                      t = 0, t_min = 0, t_max = 0;
-      // True if the element touches a boundary face outside the candidate
-      // surface that faces the obstacle (find_open_edges()): contact
-      // reaching such an element means that the candidate surface may be
-      // too small.
-      bool at_open_edge = false;
+      // The vertices of the element that a boundary face outside the
+      // candidate surface shares, a face that faces the obstacle
+      // (find_open_edges()). On a pair, only those beyond which the second
+      // body's surface goes on (pair_projected()).
+      std::vector<dealii::Point<dim>> open_edge_points;
 
       double
       mean_gap() const
       {
         return gap_integral / area;
+      }
+
+      // Contact reaching an element at an open edge means that the
+      // candidate surface may be too small.
+      bool
+      at_open_edge() const
+      {
+        return !open_edge_points.empty();
       }
     };
 

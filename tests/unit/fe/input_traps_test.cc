@@ -202,3 +202,53 @@ TEST(InputTraps, WholeModelOnOneSideIsNotMirrored)
   EXPECT_NEAR(est.resultant, 2000, 1e-6 * 2000);
   EXPECT_NEAR(est.centroid, 16, 0.05) << "statics: 16 mm";
 }
+
+
+
+// The receding block on an elastic foundation, the foundation named Body 1
+// (Body 2 is the block [0, 40]^2 with the loads of receding_block()): the
+// candidate region of the foundation's top spans the block's base, and the
+// contact zone reaches its edge at x = 40, the block's corner. Beyond it
+// the foundation's top goes on, but the block's base does not: the contact
+// cannot grow past it, and a wider region would leave foundation faces
+// without a partner (an input error). That run used to warn that the
+// candidate surface may be too small; a region of 20 mm, which does cut
+// the contact zone, must warn.
+TEST(InputTraps, BlockOnFoundationNamedFirstIsNotWarned)
+{
+  std::string block = dpana::test::receding_block(8, 8, "");
+  block.replace(block.find("Body 1"), 6, "Body 2");
+  const std::string foundation = "set Number of bodies = 2\n"
+                                 "subsection Body 1\n"
+                                 "  subsection Geometry\n"
+                                 "    set Type = rectangle\n"
+                                 "    subsection Rectangle\n"
+                                 "      set Lower corner = 0, -80\n"
+                                 "      set Upper corner = 80, 0\n"
+                                 "      set Subdivisions = 16, 16\n"
+                                 "    end\n"
+                                 "  end\n"
+                                 "  subsection Boundary conditions\n"
+                                 "    set Symmetry = left\n"
+                                 "    set Fixed = bottom: x, y\n"
+                                 "  end\n"
+                                 "end\n";
+  for (const double w : {40.0, 20.0})
+    {
+      auto s = dpana::test::make_scene<2>(foundation + block +
+                                            "subsection Contact\n"
+                                            "  set Boundary 1 = top\n"
+                                            "  set Boundary 2 = bottom\n"
+                                            "  set Candidate half width = " +
+                                            std::to_string(w) +
+                                            "\n"
+                                            "  set Contact direction = 0, 1\n"
+                                            "  set Friction coefficient = 1\n"
+                                            "end\n",
+                                          2);
+      s->run(false);
+      ASSERT_TRUE(s->summary().result.converged) << "w = " << w;
+      EXPECT_NEAR(s->summary().half_width, w, 1e-9) << "w = " << w;
+      EXPECT_EQ(s->summary().candidate_edge_warning, w < 40) << "w = " << w;
+    }
+}
