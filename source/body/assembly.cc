@@ -4,10 +4,12 @@
 //
 // The assembly of the stiffness matrix and the load vector of a body.
 
+#include <dpana/base/exceptions.h>
 #include <dpana/body/body.h>
 #include <dpana/body/p1_simplex.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace dpana
 {
@@ -217,6 +219,16 @@ namespace dpana
         for (unsigned int c = 0; c < dim; ++c)
           applied_resultant[c] = resultant[c];
       }
+    // Loads beyond about 1e150 overflow in the squares of the solvers'
+    // norms, near the largest double (1e307) already in the assembly's sums:
+    // no answer could be trusted.
+    const double sum = rhs.l1_norm();
+    if (!std::isfinite(sum * sum))
+      throw InputError(name_ +
+                       " / Loads: the nodal forces are out of the range of "
+                       "double precision (the square of their sum "
+                       "overflows); the magnitudes of Pressure, Traction or "
+                       "Concentrated forces are out of range");
   }
 
 

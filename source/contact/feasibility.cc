@@ -140,9 +140,14 @@ namespace dpana
       if (!(scale.minCoeff() > 0))
         throw std::invalid_argument("feasibility: row_scale must be positive");
 
-      // M = W G [g_k], columns of unit length; r = sum_k lambda_k g_k.
-      const unsigned int    d  = problem.dim;
-      const Eigen::MatrixXd WG = scale.cwiseInverse().asDiagonal() * problem.G;
+      // M = W G [g_k], columns of unit length; r = sum_k lambda_k g_k. The
+      // rows are weighted by the scale relative to its largest entry: the
+      // columns are normalised anyway, and G scaled by 1/scale itself would
+      // underflow for loads of 1e200 (their norms read 0, the columns were
+      // dropped and a body pressed onto the obstacle was reported unheld).
+      const unsigned int    d = problem.dim;
+      const Eigen::MatrixXd WG =
+        (scale / scale.maxCoeff()).cwiseInverse().asDiagonal() * problem.G;
       std::vector<Eigen::VectorXd> columns;
       for (unsigned int j = 0; j < problem.n_elements(); ++j)
         for (const auto &g : cone_generators(problem, problem.mu(j)))

@@ -27,6 +27,19 @@ namespace dpana
 
     namespace
     {
+      // The path @p directory names, normalised, without a trailing
+      // separator ("results/" is the directory "results").
+      fs::path
+      directory_path(const std::string &directory)
+      {
+        fs::path p = fs::path(directory).lexically_normal();
+        if (p.filename().empty() && p.has_relative_path())
+          p = p.parent_path();
+        return p;
+      }
+
+
+
       // The outermost missing ancestor of @p p (empty if its parent exists).
       fs::path
       first_missing_parent(const fs::path &p)
@@ -61,7 +74,7 @@ namespace dpana
 
 
     OutputDirectory::OutputDirectory(const std::string &directory)
-      : final_path(fs::path(directory).lexically_normal())
+      : final_path(directory_path(directory))
     {
       if (final_path.filename().empty() || final_path.filename() == "." ||
           final_path.filename() == "..")

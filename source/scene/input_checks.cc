@@ -4,6 +4,7 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/contact/feasibility.h>
+#include <dpana/contact_surface/format_point.h>
 #include <dpana/parameters/parameters.h>
 #include <dpana/scene/input_checks.h>
 
@@ -176,6 +177,50 @@ namespace dpana
 
 
     template <int dim>
+    std::string
+    off_axis_centre(const contact_surface::ContactSurface<dim> &surface)
+    {
+      // Without a contact direction the axis is the mean normal, which a
+      // quarter model's cap tilts (leaning_axes()): no vertex is nearest
+      // along it that could stand for the axis.
+      if (surface.options().direction.norm() == 0)
+        return "";
+      const dealii::Tensor<1, dim> n       = surface.surface_normal();
+      const auto                  &faces   = surface.get_faces();
+      dealii::Point<dim>           nearest = faces.at(0).points.at(0);
+      for (const auto &F : faces)
+        for (const auto &x : F.points)
+          if (x * n > nearest * n)
+            nearest = x;
+      double edge = 0;
+      for (const auto &F : faces)
+        if (std::find(F.points.begin(), F.points.end(), nearest) !=
+            F.points.end())
+          for (unsigned int v = 0; v < F.points.size(); ++v)
+            edge = std::max(
+              edge, F.points[v].distance(F.points[(v + 1) % F.points.size()]));
+      const dealii::Point<dim>     x0 = surface.options().region_centre;
+      const dealii::Tensor<1, dim> d =
+        (nearest - x0) - ((nearest - x0) * n) * n;
+      if (!(d.norm() > edge))
+        return "";
+      std::ostringstream text;
+      text << std::setprecision(4) << "Contact / Candidate centre "
+           << contact_surface::internal::format_point(x0) << " lies "
+           << d.norm() << " mm off the axis through the point of "
+           << surface.options().body
+           << "'s candidate surface nearest the obstacle, "
+           << contact_surface::internal::format_point(nearest)
+           << " (more than the " << edge
+           << " mm of the faces there): the Hertz reference measures a, a_m "
+              "and the approach about the candidate centre; put it on the "
+              "axis of the sphere";
+      return text.str();
+    }
+
+
+
+    template <int dim>
     bool
     held_across_centre(const Body<dim>                            &body,
                        const contact_surface::ContactSurface<dim> &surface,
@@ -223,6 +268,10 @@ namespace dpana
     far_gap(const contact_surface::ContactSurface<2> &);
     template std::string
     far_gap(const contact_surface::ContactSurface<3> &);
+    template std::string
+    off_axis_centre(const contact_surface::ContactSurface<2> &);
+    template std::string
+    off_axis_centre(const contact_surface::ContactSurface<3> &);
     template bool
     held_across_centre(const Body<2> &,
                        const contact_surface::ContactSurface<2> &,

@@ -87,6 +87,23 @@ namespace dpana
     far_gap(const contact_surface::ContactSurface<dim> &surface);
 
     /**
+     * The 3D Hertz reference measures its radii (the outer edge a and the
+     * moment estimate a_m) about the axis through Contact / Candidate centre
+     * x0 along the surface normal n. The text of a warning if x0 lies off
+     * the point of the candidate surface @p surface nearest the obstacle
+     * (the vertex of largest x . n: the spheres' axis, up to the
+     * tessellation) by more than the longest edge of the faces at that
+     * vertex; empty otherwise, and empty without a Contact direction (the
+     * mean normal of a quarter model's cap leans off the axis; one body on
+     * the plane is warned of that by leaning_axes()). A quarter sphere with x0
+     * moved 2 mm off its axis along both symmetry planes gives a_m 40 % too
+     * small.
+     */
+    template <int dim>
+    std::string
+    off_axis_centre(const contact_surface::ContactSurface<dim> &surface);
+
+    /**
      * Whether @p body is held across the candidate centre @p centre: a
      * vertex of the candidate surface @p surface lies at the centre's
      * position s0 along the tangent tau_1 (to 1e-9 of the surface's

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -106,6 +107,29 @@ TEST(Feasibility, UnbalancedLoadNamesTheDirection)
   EXPECT_FALSE(side.feasible);
   EXPECT_LT(side.unbalanced(1), -2.9);
   EXPECT_NEAR(side.residual, 3 / 1.01, 1e-9);
+}
+
+
+
+// The check does not depend on the loads' unit: the cases of
+// BlockIn2DAgainstStatics with every load and its scale multiplied by
+// 1e200 (an input of 1e200 MPa) or 1e-200 give the same answers. With G
+// divided by a scale of 1e200 its columns used to underflow to norm 0 and
+// be dropped: a block pressed onto the supports was reported unheld.
+TEST(Feasibility, IndependentOfTheLoadsUnit)
+{
+  for (const double unit : {1e200, 1e-200})
+    for (const auto &[mu, P, Q, feasible] :
+         std::vector<std::tuple<double, double, double, bool>>{
+           {0.1, 50, 4.9, true}, {0.1, 50, 5.1, false}, {0, 50, 0, true}})
+      {
+        const auto f = dpana::contact::check_feasibility(
+          block(2, mu, unit * P, unit * Q, 0),
+          Eigen::VectorXd::Constant(3, unit * 100.));
+        EXPECT_EQ(f.feasible, feasible)
+          << "unit " << unit << " mu " << mu << " P " << P << " Q " << Q
+          << ": residual " << f.residual;
+      }
 }
 
 

@@ -112,3 +112,22 @@ TEST(OutputDirectory, DirectoriesThatAreNotOutputAreRefused)
   EXPECT_EQ(listing(top / "notes"), (std::set<std::string>{"my_notes.txt"}));
   fs::remove_all(top);
 }
+
+
+
+// A directory written with a trailing separator, as a shell completes it,
+// is that directory; it used to be refused as naming no directory of its
+// own. The root still is refused.
+TEST(OutputDirectory, TrailingSeparatorNamesTheDirectory)
+{
+  const fs::path top = sandbox("trailing");
+  {
+    OutputDirectory directory((top / "run").string() + "/");
+    touch(fs::path(directory.staging()) / "summary.json");
+    directory.commit();
+  }
+  EXPECT_EQ(listing(top / "run"), (std::set<std::string>{"summary.json"}));
+  EXPECT_EQ(listing(top), (std::set<std::string>{"run"}));
+  EXPECT_THROW(OutputDirectory("/"), dpana::InputError);
+  fs::remove_all(top);
+}
