@@ -10,6 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <string>
 
 namespace dpana
 {
@@ -171,6 +175,11 @@ namespace dpana
     // applied, in every run (the reactions of an elastic run, the contact
     // tractions of a contact run balance it).
     applied_resultant = 0;
+    // The nodal loads as applied, before the constraints move them, for
+    // the check of the loads on symmetry planes (of a body on one process:
+    // the parts of a partitioned mesh do not all hold the planes).
+    dealii::Vector<double> applied(
+      bcs.symmetry.empty() || n_parts_ > 1 ? 0 : rhs.size());
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
         if (n_parts_ > 1 && cell->subdomain_id() != this_part_)
@@ -192,6 +201,8 @@ namespace dpana
         for (unsigned int i = 0; i < n; ++i)
           applied_resultant[fe_.system_to_component_index(i).first] +=
             cell_rhs[i];
+        if (applied.size() > 0)
+          applied.add(local, cell_rhs);
       }
     // A partitioned body: each rank has assembled its own cells; the
     // concentrated forces are added once (by rank 0), and the shares of f
@@ -199,7 +210,7 @@ namespace dpana
     // f. K stays in shares.
     if (n_parts_ == 1 || this_part_ == 0)
       {
-        add_concentrated_forces();
+        add_concentrated_forces(applied.size() > 0 ? &applied : nullptr);
         for (const auto &force : concentrated)
           applied_resultant += force.force;
       }
@@ -229,6 +240,50 @@ namespace dpana
                        "double precision (the square of their sum "
                        "overflows); the magnitudes of Pressure, Traction or "
                        "Concentrated forces are out of range");
+    if (applied.size() > 0)
+      warn_of_loads_across_symmetry(applied);
+  }
+
+
+
+  // A load normal to a plane of symmetry, at its vertices, has no mirror
+  // image that would balance it in the whole body (its mirror image is its
+  // negative): the symmetry condition takes it as a support would, and the
+  // body never feels it. A tangential force at the axis of a half model,
+  // or a pressure on the symmetry line, is such a load: the run would
+  // answer the problem without it. Loads of faces that meet the plane at
+  // an angle leave a small share there (the mirror face balances it), far
+  // below the bound of 1e-3 of the loads' sum.
+  template <int dim>
+  void
+  Body<dim>::warn_of_loads_across_symmetry(
+    const dealii::Vector<double> &applied)
+  {
+    std::map<std::string, double> across;
+    for (const auto &[v, planes] : symmetry_planes_at_vertices())
+      for (const auto &[boundary, normal] : planes)
+        {
+          double f_n = 0;
+          for (unsigned int c = 0; c < dim; ++c)
+            f_n += applied[dofs_of_vertex[v][c]] * normal[c];
+          across[boundary] += std::abs(f_n);
+        }
+    const double sum = applied.l1_norm();
+    for (const auto &[boundary, f] : across)
+      if (f > 1e-3 * sum)
+        {
+          std::ostringstream text;
+          text << std::setprecision(6) << name_ << " / Loads: loads of " << f
+               << " in all act across the symmetry boundary '" << boundary
+               << "' (normal to it, at its vertices), of a sum of " << sum
+               << " of all the loads; its symmetry condition takes them as "
+                  "a support would, and the body does not feel them (a load "
+                  "across a plane of symmetry has no mirror image: the "
+                  "model is not symmetric)";
+          if (std::find(warnings_.begin(), warnings_.end(), text.str()) ==
+              warnings_.end())
+            warnings_.push_back(text.str());
+        }
   }
 
 
@@ -237,7 +292,7 @@ namespace dpana
   // taken by the support (or passed on to the values it depends on).
   template <int dim>
   void
-  Body<dim>::add_concentrated_forces()
+  Body<dim>::add_concentrated_forces(dealii::Vector<double> *applied)
   {
     for (unsigned int k = 0; k < concentrated.size(); ++k)
       {
@@ -249,6 +304,8 @@ namespace dpana
             dofs[c]  = dofs_of_vertex[concentrated_vertex[k]][c];
           }
         constraints_.distribute_local_to_global(force, dofs, rhs);
+        if (applied != nullptr)
+          applied->add(dofs, force);
       }
   }
 

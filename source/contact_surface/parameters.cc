@@ -49,10 +49,13 @@ namespace dpana
                         "Number of faces grouped into one contact element "
                         "carrying constant tractions. 0: 2 edges in 2D, 8 "
                         "triangles (a 2 x 2 patch of split quadrilaterals) "
-                        "in 3D. In 3D take at least 2: one triangle per "
-                        "element gives about twice as many elements as "
-                        "surface vertices, and A is then singular (the log "
-                        "warns).");
+                        "in 3D. Take at least 2 in 2D and 4 in 3D: with "
+                        "fewer, nearly as many tractions as surface "
+                        "vertices oscillate from element to element (2 "
+                        "triangles per element put N_max of the quarter "
+                        "sphere 40 % above Hertz's p0), and one triangle "
+                        "per element makes A singular (the log warns of "
+                        "both).");
       prm.declare_entry(
         "Contact elements",
         "faces",

@@ -124,18 +124,25 @@ namespace dpana
     leaning_axes(const Body<dim>                            &body,
                  const contact_surface::ContactSurface<dim> &surface)
     {
-      std::string axes;
-      const auto  n = surface.surface_normal();
+      std::string  axes;
+      const auto   n        = surface.surface_normal();
+      unsigned int dominant = 0;
+      for (unsigned int c = 1; c < dim; ++c)
+        if (std::abs(n[c]) > std::abs(n[dominant]))
+          dominant = c;
+      // The axis of n itself is no lean (a support along the normal at the
+      // edge of the surface is not a symmetry plane).
       for (unsigned int c = 0; c < dim; ++c)
-        {
-          bool held = false;
-          for (const auto &F : surface.get_faces())
-            for (unsigned int v = 0; v < dim; ++v)
-              held =
-                held || condensation::held_to_zero(body, F.dofs[dim * v + c]);
-          if (held && std::abs(n[c]) > 1e-3)
-            axes += (axes.empty() ? "" : " and ") + std::string(1, "xyz"[c]);
-        }
+        if (c != dominant)
+          {
+            bool held = false;
+            for (const auto &F : surface.get_faces())
+              for (unsigned int v = 0; v < dim; ++v)
+                held =
+                  held || condensation::held_to_zero(body, F.dofs[dim * v + c]);
+            if (held && std::abs(n[c]) > 1e-3)
+              axes += (axes.empty() ? "" : " and ") + std::string(1, "xyz"[c]);
+          }
       return axes;
     }
 
@@ -171,6 +178,72 @@ namespace dpana
               "about the initial configuration: a floating body closes a "
               "uniform gap by a rigid motion, but its displacements are then "
               "far from small)";
+      return text.str();
+    }
+
+
+
+    template <int dim>
+    std::string
+    leaning_direction(const Body<dim>                            &body,
+                      const contact_surface::ContactSurface<dim> &surface,
+                      const bool                                  rigid_plane)
+    {
+      const bool given = surface.options().direction.norm() > 0;
+      if (!given && !rigid_plane)
+        return "";
+      const std::string axes = leaning_axes(body, surface);
+      if (axes.empty())
+        return "";
+      const std::string n = contact_surface::internal::format_point(
+        dealii::Point<dim>(surface.surface_normal()));
+      const std::string held = ", along which vertices of the candidate "
+                               "surface of " +
+                               body.name() + " are held (symmetry planes?): ";
+      return given ? "Contact / Contact direction " + n + " leans along " +
+                       axes + held +
+                       "the obstacle of a half or quarter model is then not "
+                       "symmetric; give a direction within the symmetry "
+                       "planes" :
+                     "Contact / Contact direction is empty, and the mean "
+                     "outward normal " +
+                       n + " of the candidate surface of " + body.name() +
+                       " leans along " + axes + held +
+                       "a half or quarter model on the rigid plane needs "
+                       "the contact direction";
+    }
+
+
+
+    template <int dim>
+    std::string
+    surface_resolution(const contact_surface::ContactSurface<dim> &surface,
+                       const bool                                  first)
+    {
+      using contact_surface::ElementShape;
+      const auto        &opts    = surface.options();
+      const bool         patches = opts.shape == ElementShape::vertex_patches;
+      const unsigned int n_e = surface.n_elements(), n_v = surface.n_vertices();
+      std::ostringstream text;
+      if (n_e > n_v)
+        text << n_e << " contact elements on " << n_v << " surface vertices of "
+             << opts.body
+             << ": more normal tractions than the surface can resist; A may "
+                "be singular and the tractions may oscillate ("
+             << (patches ? "refine the surface of " + opts.body +
+                             " or use Contact / Contact elements = faces" :
+                           std::string("raise Contact / Faces per contact "
+                                       "element"))
+             << ")";
+      else if (first && !patches && 4 * n_e > 3 * n_v)
+        text << n_e << " contact elements on " << n_v << " surface vertices of "
+             << opts.body
+             << ": a constant traction on each face or two is not a stable "
+                "pair with linear displacements, and the tractions may "
+                "oscillate from element to element (raise Contact / Faces "
+                "per contact element: the default groups "
+             << (dim == 2 ? "2 edges" : "8 triangles")
+             << "; or use Contact / Contact elements = vertices)";
       return text.str();
     }
 
@@ -268,6 +341,18 @@ namespace dpana
     far_gap(const contact_surface::ContactSurface<2> &);
     template std::string
     far_gap(const contact_surface::ContactSurface<3> &);
+    template std::string
+    leaning_direction(const Body<2> &,
+                      const contact_surface::ContactSurface<2> &,
+                      const bool);
+    template std::string
+    leaning_direction(const Body<3> &,
+                      const contact_surface::ContactSurface<3> &,
+                      const bool);
+    template std::string
+    surface_resolution(const contact_surface::ContactSurface<2> &, const bool);
+    template std::string
+    surface_resolution(const contact_surface::ContactSurface<3> &, const bool);
     template std::string
     off_axis_centre(const contact_surface::ContactSurface<2> &);
     template std::string

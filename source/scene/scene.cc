@@ -240,43 +240,19 @@ namespace dpana
       }
       if (quiet)
         return;
-      // A surface with more contact elements than vertices cannot resist
-      // every distribution of normal tractions: its V_b lacks full column
-      // rank. On one body A is then singular; on two, A = A1 + A2 may not
-      // be, but the tractions may still oscillate.
       for (const auto &s : surfaces)
         {
           std::cout << "        Candidate contact surface: " << s->description()
                     << std::endl;
-          if (s->n_elements() > s->n_vertices())
-            std::cout
-              << "        warning: " << s->n_elements()
-              << " contact elements on " << s->n_vertices()
-              << " surface vertices of " << s->options().body
-              << ": more normal tractions than the surface can resist; A "
-                 "may be singular and the tractions may oscillate ("
-              << (s->options().shape ==
-                      contact_surface::ElementShape::vertex_patches ?
-                    "refine the surface of " + s->options().body +
-                      " or use Contact / Contact elements = faces" :
-                    std::string("raise Contact / Faces per contact element"))
-              << ")" << std::endl;
+          const std::string resolution =
+            surface_resolution(*s, s == surfaces[0]);
+          if (!resolution.empty())
+            std::cout << "        warning: " << resolution << std::endl;
         }
-      if (bodies.size() == 1 && surfaces[0]->options().direction.norm() == 0)
-        {
-          const std::string axes = leaning_axes(*bodies[0], *surfaces[0]);
-          if (!axes.empty())
-            std::cout << "        warning: Contact / Contact direction is "
-                         "empty, and the mean outward normal "
-                      << contact_surface::internal::format_point(
-                           dealii::Point<dim>(surfaces[0]->surface_normal()))
-                      << " of the candidate surface of " << bodies[0]->name()
-                      << " leans along " << axes
-                      << ", along which vertices of that surface are held "
-                         "(symmetry planes?): a half or quarter model on the "
-                         "rigid plane needs the contact direction"
-                      << std::endl;
-        }
+      const std::string leaning =
+        leaning_direction(*bodies[0], *surfaces[0], bodies.size() == 1);
+      if (!leaning.empty())
+        std::cout << "        warning: " << leaning << std::endl;
       const std::string gap = far_gap(*surfaces[0]);
       if (!gap.empty())
         std::cout << "        warning: " << gap << std::endl;

@@ -541,7 +541,9 @@ namespace dpana
       dealii::FEFaceValues<dim> &fe_face_values,
       dealii::Vector<double>    &cell_rhs) const;
     void
-    add_concentrated_forces();
+    add_concentrated_forces(dealii::Vector<double> *applied);
+    void
+    warn_of_loads_across_symmetry(const dealii::Vector<double> &applied);
 
     // --- Postprocessing (postprocessing.cc) ---------------------------------
 

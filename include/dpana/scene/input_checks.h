@@ -54,11 +54,12 @@ namespace dpana
       const std::array<std::string, 2>              &contact_boundaries);
 
     /**
-     * One body on the rigid plane without a contact direction: the
-     * coordinate axes ("x and z") along which the mean outward normal of
-     * its candidate surface @p surface leans (|n_c| > 1e-3) while vertices
-     * of that surface are held along them (u_c = 0: a symmetry plane normal
-     * to the axis, or a fixed side); empty if none. A half or quarter model
+     * The coordinate axes ("x and z") along which the normal n of the
+     * candidate surface @p surface (the contact direction, or without one
+     * the mean outward normal) leans (|n_c| > 1e-3; not the axis of n's
+     * largest component) while vertices of that surface are held along
+     * them (u_c = 0: a symmetry plane normal to the axis, or a fixed side);
+     * empty if none. A half or quarter model
      * leans away from its symmetry planes that way and needs the contact
      * direction: without it the quarter sphere of
      * prm/hertz_sphere_rigid.prm gives N_max 1.45 times Hertz's p0 and a_m
@@ -68,6 +69,52 @@ namespace dpana
     std::string
     leaning_axes(const Body<dim>                            &body,
                  const contact_surface::ContactSurface<dim> &surface);
+
+    /**
+     * The text of a warning if the contact normal of @p surface leans along
+     * an axis along which vertices of that surface are held
+     * (leaning_axes(): a symmetry line or plane); empty otherwise.
+     * - Without a Contact direction, one body on the rigid plane
+     *   (@p rigid_plane): the plane's normal is the mean outward normal,
+     *   which a half or quarter model tilts away from its symmetry planes.
+     *   (Between two bodies each element keeps its own normal.)
+     * - With a Contact direction, one body or two: a direction off the
+     *   symmetry planes makes the obstacle of a half model unsymmetric. The
+     *   half disc of prm/hertz_rigid_mu0.prm with the direction 0.05, -1
+     *   gives a 12.6 % above Hertz's and N_max 15.9 % below (with 0, -1:
+     *   +1.1 % and +0.9 %), and its estimates mirror a pressure that is
+     *   not symmetric.
+     */
+    template <int dim>
+    std::string
+    leaning_direction(const Body<dim>                            &body,
+                      const contact_surface::ContactSurface<dim> &surface,
+                      const bool                                  rigid_plane);
+
+    /**
+     * The text of a warning if the contact elements of @p surface are too
+     * small for its surface vertices; empty otherwise.
+     * - More elements than vertices (one triangle per element in 3D): the
+     *   surface cannot resist every distribution of normal tractions, V_b
+     *   lacks full column rank. On one body A is then singular; on two,
+     *   A = A1 + A2 may not be, but the tractions may still oscillate.
+     * - On Body 1's surface (@p first, whose faces the elements group),
+     *   groups of faces with more than 3/4 as many elements as vertices
+     *   (one edge per element in 2D, two triangles in 3D): a constant
+     *   traction per face on linear displacements is not a stable pair, and
+     *   the tractions oscillate from element to element. On the quarter
+     *   sphere of prm/hertz_sphere_rigid.prm (level 3) two triangles per
+     *   element give N_max 40 % above Hertz's p0 (4: +1.0 %, the default 8:
+     *   +0.4 %; 0.98, 0.48 and 0.24 elements per vertex); on the receding
+     *   block one edge per element gives tangential tractions that
+     *   alternate in sign.
+     * Vertex patches (one element per vertex, the traction form of nodal
+     * conditions) are stable.
+     */
+    template <int dim>
+    std::string
+    surface_resolution(const contact_surface::ContactSurface<dim> &surface,
+                       const bool                                  first);
 
     /**
      * The closest initial gap g of the candidate surface @p surface (the

@@ -3,6 +3,7 @@
 // right or that the run says what is wrong.
 
 #include <dpana/contact/problem.h>
+#include <dpana/scene/input_checks.h>
 
 #include <cmath>
 #include <sstream>
@@ -250,5 +251,107 @@ TEST(InputTraps, BlockOnFoundationNamedFirstIsNotWarned)
       ASSERT_TRUE(s->summary().result.converged) << "w = " << w;
       EXPECT_NEAR(s->summary().half_width, w, 1e-9) << "w = " << w;
       EXPECT_EQ(s->summary().candidate_edge_warning, w < 40) << "w = " << w;
+    }
+}
+
+
+
+// The receding block with one edge per contact element: 16 elements on 17
+// surface vertices, a constant traction per edge on linear displacements,
+// which is not a stable pair. On prm/receding_2d_mu1.prm (32 edges) the
+// tangential tractions of the stick zone then alternate in sign: -8.9,
+// 13.2, -4.5, 17.6 MPa at s = 0.6 ... 4.4 mm, against 2.1, 6.5, 11.2 MPa at
+// s = 1.25 ... 6.25 mm with two edges per element. It is warned; two edges
+// (8 elements) and the patches around the vertices (17, the traction form
+// of nodal conditions) are not.
+TEST(InputTraps, OneEdgePerContactElementIsWarned)
+{
+  for (const std::string elements : {"  set Faces per contact element = 1\n",
+                                     "  set Faces per contact element = 2\n",
+                                     "  set Contact elements = vertices\n"})
+    {
+      auto s = dpana::test::make_scene<2>(
+        block_prm("set Pressure = top: 50; right: 100",
+                  elements + "  set Friction coefficient = 1\n"));
+      s->assemble();
+      s->build_contact_surface();
+      const std::string warning =
+        dpana::scene::surface_resolution(s->surface(0), true);
+      const bool one_edge = elements.find("= 1") != std::string::npos;
+      EXPECT_EQ(warning.empty(), !one_edge) << elements << warning;
+      if (one_edge)
+        {
+          EXPECT_NE(warning.find("16 contact elements on 17 surface "
+                                 "vertices of Body 1"),
+                    std::string::npos)
+            << warning;
+        }
+    }
+}
+
+
+
+// The receding block, a half model held on its symmetry line x = 0, with
+// the contact direction tilted by 1 degree (0.0175, -1): the obstacle is
+// no longer symmetric about that line, and the run is warned. The block
+// with the direction 0, -1 is not.
+TEST(InputTraps, TiltedDirectionOnAHalfModelIsWarned)
+{
+  for (const bool tilted : {false, true})
+    {
+      std::string       prm = block_prm("set Pressure = top: 50; right: 100",
+                                  "  set Friction coefficient = 1\n");
+      const std::string direction = "set Contact direction = 0, -1";
+      if (tilted)
+        prm.replace(prm.find(direction),
+                    direction.size(),
+                    "set Contact direction = 0.0175, -1");
+      auto s = dpana::test::make_scene<2>(prm);
+      s->assemble();
+      s->build_contact_surface();
+      const std::string warning =
+        dpana::scene::leaning_direction(s->body(0), s->surface(0), true);
+      EXPECT_EQ(warning.empty(), !tilted) << warning;
+      if (tilted)
+        {
+          EXPECT_NE(warning.find("leans along x"), std::string::npos)
+            << warning;
+        }
+    }
+}
+
+
+
+// Loads across the symmetry line x = 0 of the receding half block: a
+// pressure of 30 MPa on that line (1200 N/mm over its 40 mm) and a side
+// force of 500 N/mm at its top vertex. The symmetry condition takes them
+// as a support would and the contact never feels them (the run used to
+// give the answer without them, silently, with the summary listing them
+// as applied). Each is warned with its size; the scene's own loads are
+// not.
+TEST(InputTraps, LoadAcrossTheSymmetryLineIsWarned)
+{
+  const std::string shipped = "set Pressure = top: 50; right: 100";
+  for (const auto &[loads, across] :
+       std::vector<std::pair<std::string, std::string>>{
+         {shipped, ""},
+         {shipped + "; left: 30", "loads of 1200 in all"},
+         {shipped + "\n    set Concentrated forces = 0, 40: 500, 0",
+          "loads of 500 in all"}})
+    {
+      auto s = dpana::test::make_scene<2>(block_prm(loads, ""));
+      s->assemble();
+      std::string warnings;
+      for (const auto &w : s->body(0).warnings())
+        warnings += w + "\n";
+      if (across.empty())
+        EXPECT_EQ(warnings, "") << loads;
+      else
+        {
+          EXPECT_NE(warnings.find(across), std::string::npos) << warnings;
+          EXPECT_NE(warnings.find("the symmetry boundary 'left'"),
+                    std::string::npos)
+            << warnings;
+        }
     }
 }
