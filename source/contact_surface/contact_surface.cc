@@ -148,13 +148,19 @@ namespace dpana
                              "Contact / Contact direction");
           n_surface /= n_surface.norm();
         }
-      // A direction that looks away from the candidate faces as a whole is
-      // the direction's fault, not the candidate region's.
+      // A direction that looks away from the candidate faces as a whole,
+      // none of them facing it, is the direction's fault; if some face it,
+      // the candidate region's (the whole half circle of a half disc has
+      // the mean normal e_x, at a right angle to the direction 0, -1).
       dealii::Tensor<1, dim> mean_normal;
+      bool                   some_facing = false;
       for (const auto &F : faces)
-        mean_normal += F.area * F.normal;
+        {
+          mean_normal += F.area * F.normal;
+          some_facing = some_facing || F.normal * n_surface > 1e-3;
+        }
       if (opts.direction.norm() > 0 && mean_normal.norm() > 0 &&
-          mean_normal * n_surface <= 0)
+          mean_normal * n_surface <= 0 && !some_facing)
         throw InputError(
           "Contact / Contact direction " +
           internal::format_point(dealii::Point<dim>(opts.direction)) +
