@@ -112,12 +112,10 @@ namespace dpana
 
 
       // The barycentric coordinates of the plane point c in the projected
-      // face P of F, and the point of F there.
+      // face P.
       template <int dim>
-      std::pair<std::array<double, dim>, dealii::Point<dim>>
-      point_on_face(const Face<dim>     &F,
-                    const ProjectedFace &P,
-                    const PlanePoint    &c)
+      std::array<double, dim>
+      barycentric(const ProjectedFace &P, const PlanePoint &c)
       {
         const auto             &Pv = P.vertices;
         std::array<double, dim> lambda;
@@ -133,6 +131,20 @@ namespace dpana
             lambda[2]        = cross(Pv[0], Pv[1], c) / det;
             lambda[0]        = 1 - lambda[1] - lambda[2];
           }
+        return lambda;
+      }
+
+
+
+      // The barycentric coordinates of c in the projected face P of F, and
+      // the point of F there.
+      template <int dim>
+      std::pair<std::array<double, dim>, dealii::Point<dim>>
+      point_on_face(const Face<dim>     &F,
+                    const ProjectedFace &P,
+                    const PlanePoint    &c)
+      {
+        const auto lambda = barycentric<dim>(P, c);
         return std::make_pair(lambda, FacePiece<dim>::point(F, lambda));
       }
 
@@ -261,21 +273,13 @@ namespace dpana
 
 
       // Whether the projected face P holds the point c (its interval in 2D,
-      // its triangle in 3D, to round-off of its size).
+      // its triangle in 3D, to round-off).
       template <int dim>
       bool
       holds(const ProjectedFace &P, const PlanePoint &c)
       {
-        const auto  &p    = P.vertices;
-        const double size = P.box[1] - P.box[0] + P.box[3] - P.box[2];
-        if (dim == 2)
-          return c[0] >= P.box[0] - 1e-9 * size &&
-                 c[0] <= P.box[1] + 1e-9 * size;
-        const double s = cross(p[0], p[1], p[2]) > 0 ? 1 : -1;
-        for (unsigned int k = 0; k < 3; ++k)
-          if (s * cross(p[k], p[(k + 1) % 3], c) < -1e-9 * size * size)
-            return false;
-        return true;
+        const auto lambda = barycentric<dim>(P, c);
+        return *std::min_element(lambda.begin(), lambda.end()) >= -1e-9;
       }
 
 

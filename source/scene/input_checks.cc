@@ -225,9 +225,11 @@ namespace dpana
       const bool         patches = opts.shape == ElementShape::vertex_patches;
       const unsigned int n_e = surface.n_elements(), n_v = surface.n_vertices();
       std::ostringstream text;
+      const std::string counts = std::to_string(n_e) + " contact elements on " +
+                                 std::to_string(n_v) + " surface vertices of " +
+                                 opts.body;
       if (n_e > n_v)
-        text << n_e << " contact elements on " << n_v << " surface vertices of "
-             << opts.body
+        text << counts
              << ": more normal tractions than the surface can resist; A may "
                 "be singular and the tractions may oscillate ("
              << (patches ? "refine the surface of " + opts.body +
@@ -236,8 +238,7 @@ namespace dpana
                                        "element"))
              << ")";
       else if (first && !patches && 4 * n_e > 3 * n_v)
-        text << n_e << " contact elements on " << n_v << " surface vertices of "
-             << opts.body
+        text << counts
              << ": a constant traction on each face or two is not a stable "
                 "pair with linear displacements, and the tractions may "
                 "oscillate from element to element (raise Contact / Faces "

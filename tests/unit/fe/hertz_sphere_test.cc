@@ -485,12 +485,8 @@ TEST(HertzSphere, MissingContactDirectionOnTheQuarterModelIsWarned)
           const std::string entry = "  set Contact direction = 0, -1, 0\n";
           prm.erase(prm.find(entry), entry.size());
         }
-      auto scene = dpana::test::make_scene<3>(prm);
-      scene->set_quiet(false);
-      testing::internal::CaptureStdout();
-      scene->assemble();
-      scene->build_contact_surface();
-      const std::string log  = testing::internal::GetCapturedStdout();
+      auto              scene = dpana::test::make_scene<3>(prm);
+      const std::string log   = dpana::test::contact_surface_log(*scene);
       const auto        line = log.find("warning: Contact / Contact direction");
       EXPECT_EQ(line != std::string::npos, !given) << log;
       if (!given && line != std::string::npos)

@@ -158,11 +158,7 @@ TEST(InputTraps, FarInitialGapIsWarned)
       auto s = dpana::test::make_scene<2>(
         block_prm("set Pressure = top: 50; right: 100",
                   "  set Obstacle point = 0, " + std::to_string(y) + "\n"));
-      s->set_quiet(false);
-      testing::internal::CaptureStdout();
-      s->assemble();
-      s->build_contact_surface();
-      const std::string log  = testing::internal::GetCapturedStdout();
+      const std::string log  = dpana::test::contact_surface_log(*s);
       const auto        line = log.find("warning: the closest initial gap");
       const bool        far  = std::abs(y) > 4;
       EXPECT_EQ(line != std::string::npos, far) << "y = " << y << "\n" << log;

@@ -12,6 +12,8 @@
 #include <memory>
 #include <string>
 
+#include <gtest/gtest.h>
+
 namespace dpana
 {
   namespace test
@@ -27,6 +29,21 @@ namespace dpana
       s->parse_parameters(prm, n_bodies, true);
       s->set_quiet(true);
       return s;
+    }
+
+    /**
+     * The log of the first two phases of @p s (assembly and the contact
+     * surface), where the warnings about the input are printed.
+     */
+    template <int dim>
+    std::string
+    contact_surface_log(scene::Scene<dim> &s)
+    {
+      s.set_quiet(false);
+      testing::internal::CaptureStdout();
+      s.assemble();
+      s.build_contact_surface();
+      return testing::internal::GetCapturedStdout();
     }
 
     /**
