@@ -65,7 +65,7 @@ done
 python3 - "$work" "$m" "$h" <<'PYTHON' | tee "$work/assembly.md"
 import glob, json, os, re, sys
 work, m, h = sys.argv[1:4]
-phases = ["assembly", "contact surface", "factorization", "condensation",
+phases = ["mesh", "assembly", "contact surface", "factorization", "condensation",
           "contact solve", "recovery", "output"]
 print("| run | dofs | " + " | ".join(phases) +
       " | total | peak after assembly, per rank (MB) "

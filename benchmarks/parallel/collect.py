@@ -13,7 +13,7 @@ import os
 import re
 import sys
 
-PHASES = ["assembly", "contact surface", "factorization", "condensation",
+PHASES = ["mesh", "assembly", "contact surface", "factorization", "condensation",
           "contact solve", "recovery", "output"]
 MUMPS = re.compile(
     r"MUMPS on (\d+) rank\(s\): ([\d.]+) Gflop, memory estimated (\d+) MB "

@@ -14,7 +14,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-PHASES = ["assembly", "contact surface", "factorization", "condensation",
+PHASES = ["mesh", "assembly", "contact surface", "factorization", "condensation",
           "contact solve", "recovery", "output"]
 
 

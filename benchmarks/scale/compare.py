@@ -21,7 +21,7 @@ import shutil
 import subprocess
 import sys
 
-PHASES = ["assembly", "factorization", "condensation", "contact solve",
+PHASES = ["mesh", "assembly", "factorization", "condensation", "contact solve",
           "recovery", "output"]
 MESHES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                       "scripts", "meshes", "make_meshes.py")

@@ -52,7 +52,7 @@ RECEDING_SIZES = {
     "default": [(12, 24), (16, 40), (24, 56), (36, 76)],
     "full": [(12, 24), (16, 40), (24, 56), (36, 76), (46, 86), (58, 96)],
 }
-PHASES = ["assembly", "contact surface", "factorization", "condensation",
+PHASES = ["mesh", "assembly", "contact surface", "factorization", "condensation",
           "contact solve", "recovery", "output"]
 
 
@@ -192,7 +192,7 @@ def write_outputs(rows, out):
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
         w.writerows(rows)
-    short = {"assembly": "assembly", "contact surface": "surface",
+    short = {"mesh": "mesh", "assembly": "assembly", "contact surface": "surface",
              "factorization": "factor", "condensation": "condense",
              "contact solve": "solve", "recovery": "recovery",
              "output": "output"}

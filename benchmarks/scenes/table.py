@@ -70,7 +70,7 @@ def cell(text):
 def main():
     out = sys.argv[1]
     scenes = sys.argv[2:]
-    phases = ["assembly", "contact surface", "factorization", "condensation", "contact solve",
+    phases = ["mesh", "assembly", "contact surface", "factorization", "condensation", "contact solve",
               "recovery", "output"]
     rows = []
     for s in scenes:

@@ -77,13 +77,19 @@ namespace dpana
     void
     Scene<dim>::assemble_concurrently()
     {
+      {
+        const auto phase =
+          phase_log.phase("mesh", "meshing " + body_names() + " concurrently");
+        for (const auto &body : bodies)
+          phase_log.add("mesh", body->mesh_reading_time());
+        for_each_at_once(bodies.size(), [this](const unsigned int b) {
+          bodies[b]->create_mesh();
+        });
+      }
       const auto phase =
         phase_log.phase("assembly",
                         "assembling " + body_names() + " concurrently");
-      for (const auto &body : bodies)
-        phase_log.add("assembly", body->mesh_reading_time());
       for_each_at_once(bodies.size(), [this](const unsigned int b) {
-        bodies[b]->create_mesh();
         bodies[b]->setup();
         bodies[b]->assemble();
       });

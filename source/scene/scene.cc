@@ -172,16 +172,20 @@ namespace dpana
       else
         for (auto &body : bodies)
           {
-            const auto phase =
-              phase_log.phase("assembly", "assembling " + body->name());
-            phase_log.add("assembly", body->mesh_reading_time());
             // The distributed assembly of the MPI route: the cells split over
             // the ranks (a body needs at least one cell per rank); with a
             // distributed mesh only rank 0 builds the whole mesh.
             if (distributed)
               body->partition(MPI_COMM_WORLD,
                               condensation_parameters.distributed_mesh);
-            body->create_mesh();
+            {
+              const auto phase =
+                phase_log.phase("mesh", "meshing " + body->name());
+              phase_log.add("mesh", body->mesh_reading_time());
+              body->create_mesh();
+            }
+            const auto phase =
+              phase_log.phase("assembly", "assembling " + body->name());
             if (distributed)
               parallel::check_ranks(body->name(),
                                     body->n_cells(),

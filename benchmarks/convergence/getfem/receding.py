@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from contact_model import ElasticBody, boundary_faces, emit
+from contact_model import ElasticBody, boundary_faces, emit, meshing
 
 L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.2, 50.0, 100.0
 BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
@@ -26,13 +26,14 @@ BOTTOM, LEFT, UPPER, RIGHT = 10, 11, 12, 13
 def loaded_block(gf, n, nu=NU):
     """The half block on n x n squares of two P1 triangles, with its
     symmetry condition and loads (its base is the region BOTTOM)."""
-    grid = np.linspace(0.0, L, n + 1)
-    mesh = gf.Mesh("regular simplices", grid, grid)
-    tol = 1e-9 * L
-    mesh.set_region(BOTTOM, boundary_faces(mesh, lambda x, y: y < tol))
-    mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y: x < tol))
-    mesh.set_region(UPPER, boundary_faces(mesh, lambda x, y: y > L - tol))
-    mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
+    with meshing():
+        grid = np.linspace(0.0, L, n + 1)
+        mesh = gf.Mesh("regular simplices", grid, grid)
+        tol = 1e-9 * L
+        mesh.set_region(BOTTOM, boundary_faces(mesh, lambda x, y: y < tol))
+        mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y: x < tol))
+        mesh.set_region(UPPER, boundary_faces(mesh, lambda x, y: y > L - tol))
+        mesh.set_region(RIGHT, boundary_faces(mesh, lambda x, y: x > L - tol))
     body = ElasticBody(mesh, E, nu)
     body.symmetry(LEFT)
     body.traction(UPPER, [0.0, -TOP])

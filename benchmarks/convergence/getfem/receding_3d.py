@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from contact_model import ElasticBody, boundary_faces, emit
+from contact_model import ElasticBody, boundary_faces, emit, meshing
 
 L, E, NU, TOP, SIDE = 40.0, 130000.0, 0.0, 50.0, 100.0
 BOTTOM, LEFT, FRONT, UPPER, RIGHT = 10, 11, 12, 13, 14
@@ -31,17 +31,18 @@ def main():
     k = K[args.level]
     import getfem as gf
     start = time.perf_counter()
-    mesh = gf.Mesh("regular simplices", np.linspace(0.0, L, k + 1),
-                   np.linspace(0.0, L, k // 2 + 1),
-                   np.linspace(0.0, L, k + 1))
-    tol = 1e-9 * L
-    mesh.set_region(BOTTOM, boundary_faces(mesh, lambda x, y, z: y < tol))
-    mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y, z: x < tol))
-    mesh.set_region(FRONT, boundary_faces(mesh, lambda x, y, z: z < tol))
-    mesh.set_region(UPPER, boundary_faces(
-        mesh, lambda x, y, z: y > L - tol))
-    mesh.set_region(RIGHT, boundary_faces(
-        mesh, lambda x, y, z: x > L - tol))
+    with meshing():
+        mesh = gf.Mesh("regular simplices", np.linspace(0.0, L, k + 1),
+                       np.linspace(0.0, L, k // 2 + 1),
+                       np.linspace(0.0, L, k + 1))
+        tol = 1e-9 * L
+        mesh.set_region(BOTTOM, boundary_faces(mesh, lambda x, y, z: y < tol))
+        mesh.set_region(LEFT, boundary_faces(mesh, lambda x, y, z: x < tol))
+        mesh.set_region(FRONT, boundary_faces(mesh, lambda x, y, z: z < tol))
+        mesh.set_region(UPPER, boundary_faces(
+            mesh, lambda x, y, z: y > L - tol))
+        mesh.set_region(RIGHT, boundary_faces(
+            mesh, lambda x, y, z: x > L - tol))
     body = ElasticBody(mesh, E, NU)
     body.symmetry(LEFT)
     body.symmetry(FRONT)

@@ -36,7 +36,7 @@ import os
 import sys
 import time
 
-from contact_model import ElasticBody, emit
+from contact_model import ElasticBody, emit, meshing
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
@@ -73,15 +73,18 @@ def main():
     msh = [SphereMesh(level, *refine).path(prm)]
     if args.two:
         msh.append(SphereMesh(level, *LOWER, *refine).path(prm))
-    meshing = time.perf_counter() - start
+    gmsh_time = time.perf_counter() - start
     import getfem as gf
     start = time.perf_counter()
-    body = ElasticBody(gf.Mesh("import", "gmsh", msh[0]), E, NU)
+    with meshing():
+        upper = gf.Mesh("import", "gmsh", msh[0])
+        lower = gf.Mesh("import", "gmsh", msh[1]) if args.two else None
+    body = ElasticBody(upper, E, NU)
     body.symmetry(SYM_X)
     body.symmetry(SYM_Z)
     dofs = body.mfu.nbdof()
     if args.two:
-        lower = ElasticBody(gf.Mesh("import", "gmsh", msh[1]), E, NU,
+        lower = ElasticBody(lower, E, NU,
                             model=body.md, name="v", held=True)
         lower.symmetry(SYM_X)
         lower.symmetry(SYM_Z)
@@ -97,7 +100,7 @@ def main():
     nit, converged = body.solve(1e-10 * P)
     # Hertz: E* and R* both halve for two equal spheres, a and p0 stay.
     a = (3 * P * R * (1 - NU * NU) / (4 * E)) ** (1 / 3)
-    emit(body.record(nit, converged, dofs, meshing_time=meshing, hertz={
+    emit(body.record(nit, converged, dofs, meshing_time=gmsh_time, hertz={
         "a": a, "N_max": 3 * P / (2 * math.pi * a * a)}), start)
 
 

@@ -18,11 +18,12 @@ import time
 
 import numpy as np
 
-from contact_model import ElasticBody, boundary_faces, emit
+from contact_model import ElasticBody, boundary_faces, emit, meshing
 from receding import BOTTOM, E, L, NU, TOP, loaded_block
 F_TOP, F_LEFT, F_BASE = 20, 21, 22
 
 
+@meshing()
 def foundation(gf, n, tol):
     mesh = gf.Mesh("regular simplices", np.linspace(0.0, 2 * L, 2 * n + 1),
                    np.linspace(-2 * L, 0.0, 2 * n + 1))

@@ -16,8 +16,9 @@
 namespace dpana
 {
   /**
-   * The record of the phases of one run: every phase (assembly, contact
-   * surface, factorization, condensation, contact solve, recovery, output)
+   * The record of the phases of one run: every phase (mesh, assembly,
+   * contact surface, factorization, condensation, contact solve, recovery,
+   * output)
    * is timed by one dealii::TimerOutput, and after it ends the peak resident
    * memory of the process so far (getrusage) is noted. Both go to the log
    * and to summary.json.
@@ -69,7 +70,7 @@ namespace dpana
     /**
      * Counts @p seconds, measured before the phase was opened, in @p phase:
      * the reading of the mesh files while the parameters are read belongs
-     * to the assembly, where the other meshes are built.
+     * to the mesh phase, where the other meshes are built.
      */
     void
     add(const std::string &phase, const double seconds);

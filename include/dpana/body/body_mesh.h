@@ -94,7 +94,7 @@ namespace dpana
     /**
      * The wall time of reading the body's mesh file while the parameters
      * were read (s; 0 for a generated mesh), which the scene counts in the
-     * assembly phase.
+     * mesh phase.
      */
     double
     mesh_reading_time() const

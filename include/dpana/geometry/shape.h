@@ -80,7 +80,7 @@ namespace dpana
 
       /**
        * The wall time spent in parse_parameters() reading input files of
-       * the mesh (s), which the scene counts in the assembly phase with the
+       * the mesh (s), which the scene counts in the mesh phase with the
        * building of the mesh; 0 for the shapes generated in
        * create_triangulation().
        */

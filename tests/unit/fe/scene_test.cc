@@ -80,7 +80,7 @@ TEST(Scene, ElasticRunIsTheRunWithoutContact)
   EXPECT_FALSE(scene.has_contact());
   EXPECT_NEAR(scene.body(0).max_displacement(), 0.02688040575, 1e-10);
   EXPECT_EQ(phase_names(scene.phases()),
-            (std::set<std::string>{"assembly", "solve", "recovery"}));
+            (std::set<std::string>{"mesh", "assembly", "solve", "recovery"}));
 }
 
 
@@ -90,13 +90,15 @@ TEST(Scene, ContactPhasesOneByOne)
 {
   auto s = make_scene<2>(receding_contact("unused"));
   s->assemble();
-  EXPECT_EQ(phase_names(s->phases()), (std::set<std::string>{"assembly"}));
+  EXPECT_EQ(phase_names(s->phases()),
+            (std::set<std::string>{"mesh", "assembly"}));
   s->build_contact_surface();
   s->condense();
   s->solve();
   s->recover();
   EXPECT_EQ(phase_names(s->phases()),
-            (std::set<std::string>{"assembly",
+            (std::set<std::string>{"mesh",
+                                   "assembly",
                                    "contact surface",
                                    "factorization",
                                    "condensation",
@@ -143,7 +145,8 @@ TEST(Scene, ContactOutputFilesAndSummary)
   EXPECT_NEAR(summary["contact"]["max_normal_traction"].get<double>(),
               50,
               1e-8);
-  for (const std::string phase : {"assembly",
+  for (const std::string phase : {"mesh",
+                                  "assembly",
                                   "contact surface",
                                   "factorization",
                                   "condensation",
