@@ -31,10 +31,8 @@ namespace dpana
         "Contact / Reference / Comparison file '" + comparison_file + "'";
       if (!std::filesystem::exists(comparison_file))
         {
-          std::cerr << "dpana: warning: " << what
-                    << " not found (run the scene that writes it first); "
-                       "no comparison is printed"
-                    << std::endl;
+          warn(what + " not found (run the scene that writes it first); no "
+                      "comparison is printed");
           return;
         }
       if (std::filesystem::is_directory(comparison_file))

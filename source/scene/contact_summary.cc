@@ -183,6 +183,18 @@ namespace dpana
 
 
 
+    std::string
+    candidate_edge_warning()
+    {
+      return "the contact zone reaches an edge of the candidate surface "
+             "beyond which the body's surface goes on towards the obstacle; "
+             "enlarge the candidate region (Contact / Candidate half width) "
+             "or, if it holds the whole contact boundary, that boundary in "
+             "the mesh";
+    }
+
+
+
     void
     print(const ContactSummary &summary,
           const unsigned int    dim,
@@ -212,12 +224,7 @@ namespace dpana
                "point, along the contact normal): "
             << summary.estimates.approach << " mm" << std::endl;
       if (summary.candidate_edge_warning)
-        out << "WARNING: the contact zone reaches an edge of the candidate "
-               "surface beyond which the body's surface goes on towards the "
-               "obstacle; enlarge the candidate region (Contact / Candidate "
-               "half width) or, if it holds the whole contact boundary, that "
-               "boundary in the mesh"
-            << std::endl;
+        out << "WARNING: " << candidate_edge_warning() << std::endl;
       for (const auto &c : summary.comparisons)
         out << c.text << std::endl;
     }

@@ -22,6 +22,17 @@ namespace dpana
   {
     namespace
     {
+      // A number as the warnings print it (6 significant digits).
+      std::string
+      number(const double x)
+      {
+        std::ostringstream s;
+        s << std::setprecision(6) << x;
+        return s.str();
+      }
+
+
+
       // Relative difference of x from a reference value (0 if there is none).
       double
       relative(const double x, const double ref)
@@ -266,6 +277,42 @@ namespace dpana
 
     template <int dim>
     void
+    References<dim>::warn(const std::string &text) const
+    {
+      if (std::find(warnings_.begin(), warnings_.end(), text) !=
+          warnings_.end())
+        return;
+      warnings_.push_back(text);
+      if (parallel::is_root())
+        std::cerr << "dpana: warning: " << text << std::endl;
+    }
+
+
+
+    // The Hertz formulas are those of the load Hertz load: a run whose
+    // contact carries another one (a force changed, a half or quarter model
+    // given the load of the whole body or the wrong fraction) is compared
+    // with another problem, which the relative errors alone do not show.
+    // The resultant equals the applied load to round-off, so 1 % is a
+    // wrong input, not a discretisation error.
+    template <int dim>
+    void
+    References<dim>::check_hertz_load(const double       P,
+                                      const std::string &measured) const
+    {
+      if (std::abs(relative(P, hertz_load)) <= 1e-2)
+        return;
+      warn("Contact / Reference / Hertz load = " + number(hertz_load) +
+           ", but the contact of this run carries P = " + number(P) + " (" +
+           measured +
+           "): the Hertz values compared are those of another load; give "
+           "the load of the whole body");
+    }
+
+
+
+    template <int dim>
+    void
     References<dim>::measure_approach(
       const std::vector<std::unique_ptr<Body<dim>>> &bodies,
       const contact_surface::ContactSurface<dim>    &surface,
@@ -286,11 +333,9 @@ namespace dpana
       catch (const std::exception &)
         {
           // A mesh of a part of the sphere need not hold its centre.
-          if (parallel::is_root())
-            std::cerr << "dpana: warning: Contact / Reference: the centre of "
-                         "a sphere or the contact point lies outside its "
-                         "mesh; the approach is not measured"
-                      << std::endl;
+          warn("Contact / Reference: the centre of a sphere or the "
+               "contact point lies outside its mesh; the approach is not "
+               "measured");
           return;
         }
       summary.estimates.approach_measured = true;
@@ -348,13 +393,20 @@ namespace dpana
       const double a_H = hertz.half_width;
       const double N_H = hertz.max_pressure;
       const double a = summary.half_width, N = summary.max_pressure;
+      // The load of the whole body: the resultant of a half model twice.
+      const double P =
+        summary.normal_resultant * (summary.estimates.mirrored ? 2 : 1);
+      check_hertz_load(P,
+                       summary.estimates.mirrored ?
+                         "twice the resultant of -N of this half model" :
+                         "the resultant of -N");
 
       std::ostringstream out;
       out << std::setprecision(6) << "Reference (Hertz): a = " << a_H
           << " mm, N_max = " << N_H << " MPa; relative errors of this run: a "
           << std::showpos << relative(a, a_H) << " (centroid "
           << relative(summary.half_width_centroid, a_H) << "), N_max "
-          << relative(N, N_H);
+          << relative(N, N_H) << ", P " << relative(P, hertz_load);
       std::vector<Comparison> c{
         {"hertz",
          out.str(),
@@ -362,7 +414,10 @@ namespace dpana
           {"N_max", N_H},
           {"a_error", relative(a, a_H)},
           {"a_centroid_error", relative(summary.half_width_centroid, a_H)},
-          {"N_max_error", relative(N, N_H)}},
+          {"N_max_error", relative(N, N_H)},
+          {"load", hertz_load},
+          {"resultant", P},
+          {"load_error", relative(P, hertz_load)}},
          ""}};
       add_estimator_errors(c[0], a_H, N_H, summary);
       if (table_half_width > 0 || table_max_pressure > 0)
@@ -439,9 +494,8 @@ namespace dpana
         hertz_point_contact(hertz_load, compliance, radius_1, radius_2);
 
       const dealii::Point<dim> x0 = surface.options().region_centre;
-      if (const auto w = off_axis_centre(surface);
-          !w.empty() && parallel::is_root())
-        std::cerr << "dpana: warning: " << w << std::endl;
+      if (const auto w = off_axis_centre(surface); !w.empty())
+        warn(w);
       std::vector<PressurePiece> pieces;
       double                     a_edge = 0, a_element = 0;
       for (unsigned int j = 0; j < summary.n_elements; ++j)
@@ -471,6 +525,9 @@ namespace dpana
       const double a_m = moment_contact_radius(pieces);
       const double P   = summary.normal_resultant / model_fraction;
       const double N   = summary.max_pressure;
+      check_hertz_load(P,
+                       "the resultant of -N over Model fraction = " +
+                         number(model_fraction));
       // Hertz's approach seen from the spheres' centres: less the
       // half-space displacement at their depths.
       double centre_approach = H.approach;

@@ -242,24 +242,30 @@ namespace dpana
         const auto phase = phase_log.phase("contact surface");
         make_surfaces();
       }
-      if (quiet)
-        return;
       for (const auto &s : surfaces)
         {
-          std::cout << "        Candidate contact surface: " << s->description()
-                    << std::endl;
-          const std::string resolution =
-            surface_resolution(*s, s == surfaces[0]);
-          if (!resolution.empty())
-            std::cout << "        warning: " << resolution << std::endl;
+          if (!quiet)
+            std::cout << "        Candidate contact surface: "
+                      << s->description() << std::endl;
+          warn(surface_resolution(*s, s == surfaces[0]));
         }
-      const std::string leaning =
-        leaning_direction(*bodies[0], *surfaces[0], bodies.size() == 1);
-      if (!leaning.empty())
-        std::cout << "        warning: " << leaning << std::endl;
-      const std::string gap = far_gap(*surfaces[0]);
-      if (!gap.empty())
-        std::cout << "        warning: " << gap << std::endl;
+      warn(leaning_direction(*bodies[0], *surfaces[0], bodies.size() == 1));
+      warn(far_gap(*surfaces[0]));
+    }
+
+
+
+    // A warning of the scene (empty: none) in the log, indented under the
+    // phase that found it, and in summary.json.
+    template <int dim>
+    void
+    Scene<dim>::warn(const std::string &text)
+    {
+      if (text.empty())
+        return;
+      warnings_.push_back(text);
+      if (!quiet)
+        std::cout << "        warning: " << text << std::endl;
     }
 
 
@@ -448,11 +454,7 @@ namespace dpana
         else if (output_parameters.write_vtu)
           output::write_bodies(bodies, staging);
         if (plot.valid())
-          {
-            const std::string warning = plot.get();
-            if (!warning.empty())
-              std::cout << "warning: " << warning << std::endl;
-          }
+          warn(plot.get());
       }
       write_summary(staging);
       directory.commit();
@@ -502,6 +504,12 @@ namespace dpana
       for (const auto &body : bodies)
         for (const auto &w : body->warnings())
           summary["warnings"].push_back(w);
+      for (const auto &w : references.warnings())
+        summary["warnings"].push_back(w);
+      if (with_contact && summary_.candidate_edge_warning)
+        summary["warnings"].push_back(candidate_edge_warning());
+      for (const auto &w : warnings_)
+        summary["warnings"].push_back(w);
       if (with_contact)
         {
           summary["contact"] = output::to_json(summary_, dim);

@@ -93,6 +93,14 @@ namespace dpana
               const bool symmetric_about_centre = true);
 
     /**
+     * The warning of a contact zone that reaches an edge of the candidate
+     * surface beyond which the body goes on towards the obstacle (the log's
+     * WARNING line and an entry of summary.json's warnings).
+     */
+    std::string
+    candidate_edge_warning();
+
+    /**
      * The lines of the log: half width, pressure, zones, the warning of a
      * contact zone that reaches the edge of the candidate surface, and the
      * comparisons.

@@ -178,6 +178,18 @@ namespace dpana
               const contact_surface::ContactSurface<dim>    &surface,
               const ContactSummary                          &summary) const;
 
+      /**
+       * The warnings of the references so far (a comparison file not
+       * found, a candidate centre off the sphere's axis, an approach not
+       * measured), one line each: the log has them as "dpana: warning:"
+       * lines, summary.json in its `warnings`.
+       */
+      const std::vector<std::string> &
+      warnings() const
+      {
+        return warnings_;
+      }
+
     private:
       std::string type                    = "none";
       double      uniform_normal_traction = 0;
@@ -187,6 +199,17 @@ namespace dpana
       std::string comparison_file;
       // Rows (s, N, T) of the comparison file, sorted by s; empty if none.
       std::vector<std::array<double, 3>> comparison_table;
+      mutable std::vector<std::string>   warnings_;
+
+      // Prints @p text as a "dpana: warning:" line (on rank 0) and keeps it
+      // for warnings(), once.
+      void
+      warn(const std::string &text) const;
+
+      // Warns when the load P the contact carries (@p measured says how it
+      // was found) is not the Hertz load.
+      void
+      check_hertz_load(const double P, const std::string &measured) const;
 
       void
       load_comparison_file();

@@ -204,6 +204,12 @@ namespace dpana
       PhaseLog                phase_log;
       contact::ContactProblem problem_;
       ContactSummary          summary_;
+      // The warnings of the contact surface and of the output, one line
+      // each, for summary.json (the bodies and the references keep theirs).
+      std::vector<std::string> warnings_;
+
+      void
+      warn(const std::string &text);
 
       void
       make_surfaces();
