@@ -15,6 +15,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -242,6 +243,9 @@ namespace dpana
         const auto phase = phase_log.phase("contact surface");
         make_surfaces();
       }
+      // The warnings are rank 0's, which writes the summary.
+      if (!parallel::is_root())
+        return;
       for (const auto &s : surfaces)
         {
           if (!quiet)
@@ -261,7 +265,8 @@ namespace dpana
     void
     Scene<dim>::warn(const std::string &text)
     {
-      if (text.empty())
+      if (text.empty() || std::find(warnings_.begin(), warnings_.end(), text) !=
+                            warnings_.end())
         return;
       warnings_.push_back(text);
       if (!quiet)
