@@ -25,19 +25,31 @@ namespace dpana
     {
       // The motions along which a body's unbalanced load acts: its
       // components of at least 0.3 times the largest, each with the sign
-      // of the load ("+y", "-rotation").
+      // of the load ("+x", "-rotation"). The closest balanced load within
+      // the friction cones may overshoot the body's own load along a
+      // motion (a block pushed sideways on the plane: the fit presses it
+      // harder than its loads do, for more friction, and leaves an
+      // unbalanced part against the load, -e, along y); such a component
+      // is not a part of the loads that cannot be balanced, and is named
+      // only if no other one is.
       std::string
       directions(const std::vector<RigidMode> &modes,
-                 const Eigen::VectorXd        &unbalanced)
+                 const Eigen::VectorXd        &unbalanced,
+                 const Eigen::VectorXd        &rhs)
       {
         const double largest = unbalanced.lpNorm<Eigen::Infinity>();
-        std::string  text;
+        std::string  short_of_load, all;
         for (unsigned int k = 0; k < modes.size(); ++k)
           if (std::abs(unbalanced(k)) >= 0.3 * largest)
-            text += (text.empty() ? "" : ", ") +
-                    std::string(unbalanced(k) > 0 ? "+" : "-") +
-                    modes[k].description;
-        return text;
+            {
+              const std::string d = std::string(unbalanced(k) > 0 ? "+" : "-") +
+                                    modes[k].description;
+              all += (all.empty() ? "" : ", ") + d;
+              // G r = e: the load on the motion is -e.
+              if (unbalanced(k) * rhs(k) < 0)
+                short_of_load += (short_of_load.empty() ? "" : ", ") + d;
+            }
+        return short_of_load.empty() ? all : short_of_load;
       }
     } // namespace
 
@@ -69,9 +81,10 @@ namespace dpana
         {
           const auto           &modes = body->free_rigid_modes();
           const Eigen::VectorXd u     = f.unbalanced.segment(row, modes.size());
+          const Eigen::VectorXd e     = problem.e.segment(row, modes.size());
           row += modes.size();
           if (!modes.empty() && u.lpNorm<Eigen::Infinity>() > tolerance)
-            unheld.emplace_back(body->name(), directions(modes, u));
+            unheld.emplace_back(body->name(), directions(modes, u, e));
         }
       std::string names, where;
       for (const auto &[name, along] : unheld)
