@@ -5,6 +5,7 @@
 // The assembly of the stiffness matrix and the load vector of a body.
 
 #include <dpana/base/exceptions.h>
+#include <dpana/base/warnings.h>
 #include <dpana/body/body.h>
 #include <dpana/body/p1_simplex.h>
 
@@ -280,9 +281,7 @@ namespace dpana
                   "a support would, and the body does not feel them (a load "
                   "across a plane of symmetry has no mirror image: the "
                   "model is not symmetric)";
-          if (std::find(warnings_.begin(), warnings_.end(), text.str()) ==
-              warnings_.end())
-            warnings_.push_back(text.str());
+          add_warning(warnings_, text.str());
         }
   }
 

@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
+#include <dpana/base/warnings.h>
 #include <dpana/parallel/route.h>
 #include <dpana/scene/approach.h>
 #include <dpana/scene/input_checks.h>
@@ -279,11 +280,7 @@ namespace dpana
     void
     References<dim>::warn(const std::string &text) const
     {
-      if (std::find(warnings_.begin(), warnings_.end(), text) !=
-          warnings_.end())
-        return;
-      warnings_.push_back(text);
-      if (parallel::is_root())
+      if (add_warning(warnings_, text) && parallel::is_root())
         std::cerr << "dpana: warning: " << text << std::endl;
     }
 

@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
+#include <dpana/base/warnings.h>
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/contact_surface/format_point.h>
 #include <dpana/io/fclib.h>
@@ -265,11 +266,7 @@ namespace dpana
     void
     Scene<dim>::warn(const std::string &text)
     {
-      if (text.empty() || std::find(warnings_.begin(), warnings_.end(), text) !=
-                            warnings_.end())
-        return;
-      warnings_.push_back(text);
-      if (!quiet)
+      if (add_warning(warnings_, text) && !quiet)
         std::cout << "        warning: " << text << std::endl;
     }
 
