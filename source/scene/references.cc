@@ -190,12 +190,15 @@ namespace dpana
       prm.declare_entry("Radius 1",
                         "40",
                         Double(0.),
-                        "Radius of the cylinder (Body 1) (mm).");
+                        "Radius of the cylinder or sphere (Body 1) (mm); "
+                        "a run warns if its surface about Candidate centre "
+                        "has another.");
       prm.declare_entry("Radius 2",
                         "0",
                         Double(),
                         "Radius of the other surface (mm): 0 flat, > 0 "
-                        "convex, < 0 a cavity of radius |Radius 2|.");
+                        "convex, < 0 a cavity of radius |Radius 2| (checked "
+                        "like Radius 1; the rigid plane is flat).");
       prm.declare_entry("Table half width",
                         "0",
                         Double(0.),

@@ -405,6 +405,7 @@ namespace dpana
                                    surface_parameters.region_centre));
       summary_.estimates.approach_measured = approach.approach_measured;
       summary_.estimates.approach          = approach.approach;
+      references.check_radii(surfaces);
       summary_.comparisons = references.compare(bodies, *surfaces[0], summary_);
     }
 

@@ -169,6 +169,24 @@ namespace dpana
                        ContactSummary &summary) const;
 
       /**
+       * For the Hertz types, warns when a radius does not match the mesh:
+       * when the sphere (circle) fitted to a body's surface about the
+       * contact point x0 (`Candidate centre`), its centre on the axis
+       * through x0 along the contact normal (fit_axial_sphere() of
+       * contact_surface/axial_sphere_fit.h), has a curvature 1/R that
+       * differs from that of Radius 1 (Body 1: its candidate faces) or
+       * Radius 2 (Body 2: its faces paired with them; a rigid plane is
+       * flat) by more than 1 % of the Hertz curvature 1/R1 + 1/R2. The
+       * Hertz values would be those of another geometry, and the approach
+       * would be measured at points that are not the spheres' centres.
+       * @p surfaces are the contact surfaces of the bodies, Body 1's first.
+       */
+      void
+      check_radii(
+        const std::vector<std::unique_ptr<contact_surface::ContactSurface<dim>>>
+          &surfaces) const;
+
+      /**
        * The comparisons of a run: @p bodies give the elastic constants of
        * the Hertz formulas, @p surface the element positions, @p summary
        * the tractions and the measured half width and pressure.
