@@ -8,6 +8,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace dpana
 {
@@ -171,6 +173,63 @@ namespace dpana
 
 
     template <int dim>
+    std::string
+    polygon_symmetry_warning(
+      const Body<dim>                            &body,
+      const contact_surface::ContactSurface<dim> &surface,
+      const contact::ConeModel                    cone,
+      const unsigned int                          sides)
+    {
+      if (dim != 3 || cone != contact::ConeModel::polygon ||
+          surface.options().shape != contact_surface::ElementShape::face_groups)
+        return {};
+      const auto &faces = surface.get_faces();
+      for (const auto &e : surface.get_elements())
+        for (const auto &piece : e.pieces)
+          {
+            const auto &F = faces[piece.face];
+            for (unsigned int v = 0; v < dim; ++v)
+              {
+                unsigned int n_held = 0;
+                for (unsigned int c = 0; c < dim; ++c)
+                  n_held += held_to_zero(body, F.dofs[dim * v + c]);
+                // A fixed vertex is no symmetry plane.
+                if (n_held == dim)
+                  continue;
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    if (!held_to_zero(body, F.dofs[dim * v + c]) ||
+                        std::abs(e.normal[c]) > 1e-9)
+                      continue;
+                    const double angle =
+                      std::atan2(e.tangents[1][c], e.tangents[0][c]) + M_PI / 2;
+                    const double k = angle * sides / M_PI;
+                    if (std::abs(k - std::round(k)) < 1e-6)
+                      continue;
+                    return "Contact / Polygon sides = " +
+                           std::to_string(sides) +
+                           ": the friction polygon is not symmetric about "
+                           "the symmetry plane normal to the " +
+                           std::string(1, "xyz"[c]) + " axis at " +
+                           contact_surface::internal::format_point(
+                             F.points[v]) +
+                           " on the candidate surface of " +
+                           surface.options().body +
+                           ", so this part model's tractions are not those "
+                           "of the whole body under this polygon (its "
+                           "mirror lines lie at multiples of 180/" +
+                           std::to_string(sides) +
+                           " degrees from tau_1; an even number of sides "
+                           "suits planes along the axes)";
+                  }
+              }
+          }
+      return {};
+    }
+
+
+
+    template <int dim>
     double
     largest_asymmetry(const std::vector<const Condenser<dim> *> &condensers)
     {
@@ -198,6 +257,16 @@ namespace dpana
     held_to_zero(const Body<2> &, const dealii::types::global_dof_index);
     template bool
     held_to_zero(const Body<3> &, const dealii::types::global_dof_index);
+    template std::string
+    polygon_symmetry_warning(const Body<2> &,
+                             const contact_surface::ContactSurface<2> &,
+                             const contact::ConeModel,
+                             const unsigned int);
+    template std::string
+    polygon_symmetry_warning(const Body<3> &,
+                             const contact_surface::ContactSurface<3> &,
+                             const contact::ConeModel,
+                             const unsigned int);
     template std::vector<unsigned int>
     tangentially_held_unknowns(const Body<2> &,
                                const contact_surface::ContactSurface<2> &);

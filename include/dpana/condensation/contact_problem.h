@@ -102,6 +102,28 @@ namespace dpana
                               const std::vector<unsigned int> &unknowns);
 
     /**
+     * Groups of faces (ElementShape::face_groups) with the friction polygon
+     * of @p sides sides in 3D: a part model is the whole body only if the
+     * polygon of each element is symmetric about each symmetry plane across
+     * the candidate surface. Such a plane holds the displacement component
+     * c (its normal, a coordinate axis) of a vertex of a candidate face to
+     * zero; with nu the angle of e_c in the element's tangential frame
+     * (e_c . tau_1, e_c . tau_2), the plane mirrors T about the line at
+     * nu + 90 degrees, which must be one of the polygon's mirror lines, at
+     * the multiples of 180/s degrees from tau_1 (its facet normals lie at
+     * the angles 2 pi i / s). Returns a one-line warning naming the first
+     * plane that is not, empty otherwise (and for elements whose normal is
+     * not normal to e_c, whose mirror image has a frame of its own).
+     */
+    template <int dim>
+    std::string
+    polygon_symmetry_warning(
+      const Body<dim>                            &body,
+      const contact_surface::ContactSurface<dim> &surface,
+      const contact::ConeModel                    cone,
+      const unsigned int                          sides);
+
+    /**
      * The largest relative asymmetry ||A_b - A_b^T||_F / ||A_b||_F of the
      * compliance matrices of @p condensers before their symmetrisation
      * (Condenser::asymmetry()): a check of the blocked solves, near machine
