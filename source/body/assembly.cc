@@ -177,10 +177,9 @@ namespace dpana
     // tractions of a contact run balance it).
     applied_resultant = 0;
     // The nodal loads as applied, before the constraints move them, for
-    // the check of the loads on symmetry planes (of a body on one process:
-    // the parts of a partitioned mesh do not all hold the planes).
-    dealii::Vector<double> applied(
-      bcs.symmetry.empty() || n_parts_ > 1 ? 0 : rhs.size());
+    // the check of the loads on symmetry planes (summed over the parts of
+    // a partitioned body, as f).
+    dealii::Vector<double> applied(bcs.symmetry.empty() ? 0 : rhs.size());
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
         if (n_parts_ > 1 && cell->subdomain_id() != this_part_)
@@ -223,6 +222,13 @@ namespace dpana
                       MPI_DOUBLE,
                       MPI_SUM,
                       communicator_);
+        if (applied.size() > 0)
+          MPI_Allreduce(MPI_IN_PLACE,
+                        applied.begin(),
+                        applied.size(),
+                        MPI_DOUBLE,
+                        MPI_SUM,
+                        communicator_);
         double resultant[dim];
         for (unsigned int c = 0; c < dim; ++c)
           resultant[c] = applied_resultant[c];
@@ -254,14 +260,32 @@ namespace dpana
   // or a pressure on the symmetry line, is such a load: the run would
   // answer the problem without it. Loads of faces that meet the plane at
   // an angle leave a small share there (the mirror face balances it), far
-  // below the bound of 1e-3 of the loads' sum.
+  // below the bound of 1e-3 of the loads' sum. Every rank of a partitioned
+  // body holds the whole of @p applied and finds the same planes: on the
+  // whole mesh, or with a distributed one, which holds only the ranks' own
+  // cells, among the supports that rank 0 found on the whole mesh (a plane
+  // is there at every vertex where it constrains a component).
   template <int dim>
   void
   Body<dim>::warn_of_loads_across_symmetry(
     const dealii::Vector<double> &applied)
   {
+    std::map<unsigned int, SupportDirections> planes_at_vertices;
+    if (mesh_is_distributed())
+      {
+        for (const auto &[v, supports] : support_directions)
+          for (const auto &support : supports)
+            if (std::any_of(bcs.symmetry.begin(),
+                            bcs.symmetry.end(),
+                            [&](const auto &s) {
+                              return s.boundary == support.first;
+                            }))
+              planes_at_vertices[v].push_back(support);
+      }
+    else
+      planes_at_vertices = symmetry_planes_at_vertices();
     std::map<std::string, double> across;
-    for (const auto &[v, planes] : symmetry_planes_at_vertices())
+    for (const auto &[v, planes] : planes_at_vertices)
       for (const auto &[boundary, normal] : planes)
         {
           double f_n = 0;
