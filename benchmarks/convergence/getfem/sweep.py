@@ -169,12 +169,24 @@ def h_of(args, level):
     return H[args[0]](level)
 
 
+def huge_page_environment():
+    """The environment of a GetFEM run: as dpana's (the dpana command asks
+    malloc for transparent huge pages, source/launcher/launcher.cc), so
+    that the two codes pay the same page faults."""
+    env = dict(os.environ)
+    given = env.get("GLIBC_TUNABLES", "")
+    if "glibc.malloc.hugetlb" not in given:
+        env["GLIBC_TUNABLES"] = ":".join(
+            t for t in (given, "glibc.malloc.hugetlb=1") if t)
+    return env
+
+
 def run_level(python, args, level, timeout):
     start = time.perf_counter()
     try:
         proc = subprocess.run([python, *args, "--level", str(level)],
                               cwd=HERE, capture_output=True, text=True,
-                              timeout=timeout)
+                              timeout=timeout, env=huge_page_environment())
     except subprocess.TimeoutExpired:
         return {"level": level, "failed": f"timeout {timeout} s"}
     wall = time.perf_counter() - start
