@@ -201,8 +201,11 @@ namespace dpana
                     if (!held_to_zero(body, F.dofs[dim * v + c]) ||
                         std::abs(e.normal[c]) > 1e-9)
                       continue;
+                    // tau_2 in 3D (the last tangent: in bounds for the
+                    // instance of dim = 2 too, which returned above).
+                    const auto  &tau_2 = e.tangents.back();
                     const double angle =
-                      std::atan2(e.tangents[1][c], e.tangents[0][c]) + M_PI / 2;
+                      std::atan2(tau_2[c], e.tangents[0][c]) + M_PI / 2;
                     const double k = angle * sides / M_PI;
                     if (std::abs(k - std::round(k)) < 1e-6)
                       continue;
