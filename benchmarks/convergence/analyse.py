@@ -446,9 +446,11 @@ def comparison_section(summary):
           "their converged values, or the exact value; '—': reached on the "
           "coarsest level of one code, or not reached). Solve time: from a "
           "mesh in memory to the answers, the mesh timed apart for both "
-          "codes; † a pair of sweeps from before the mesh was timed apart, "
-          "whose solve times count the mesh: dpana's reading of its gmsh "
-          "file, GetFEM's import of the same file or its grid.",
+          "codes, both with malloc's huge pages (README, 'The peer'); † a "
+          "pair of sweeps from before the mesh was timed apart, whose "
+          "solve times count the mesh: dpana's reading of its gmsh file, "
+          "GetFEM's import of the same file or its grid, both without huge "
+          "pages.",
           "", "| family | quantity | 1 % | 0.5 % | 0.2 % | 0.1 % | "
           "converged dpana | converged GetFEM | difference |",
           "|---|---|---|---|---|---|---|---|---|"]
