@@ -8,8 +8,10 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace dpana
 {
@@ -79,6 +81,30 @@ namespace dpana
 
 
 
+    namespace
+    {
+      // The components of the displacement of vertex @p v of the face @p F
+      // that a constraint of @p body holds at zero, and how many they are
+      // (dim: a fixed vertex).
+      template <int dim>
+      std::pair<std::array<bool, dim>, unsigned int>
+      held_components(const Body<dim>                  &body,
+                      const contact_surface::Face<dim> &F,
+                      const unsigned int                v)
+      {
+        std::array<bool, dim> held{};
+        unsigned int          n_held = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            held[c] = held_to_zero(body, F.dofs[dim * v + c]);
+            n_held += held[c];
+          }
+        return {held, n_held};
+      }
+    } // namespace
+
+
+
     // @sect3{Patches on symmetry lines and planes}
     //
     // The vertex of a patch is the corner of its first piece at which the
@@ -109,15 +135,12 @@ namespace dpana
           while (v < dim && piece.corners[0][v] != 1.0)
             ++v;
           AssertThrow(v < dim, dealii::ExcInternalError());
-          unsigned int n_held = 0;
+          const auto [held_c, n_held] = held_components(body, F, v);
           for (unsigned int c = 0; c < dim; ++c)
-            if (held_to_zero(body, F.dofs[dim * v + c]))
-              {
-                ++n_held;
-                for (unsigned int k = 0; k + 1 < dim; ++k)
-                  if (e.tangents[k][c] * e.tangents[k][c] > 0.5)
-                    held[dim * j + 1 + k] = 1;
-              }
+            if (held_c[c])
+              for (unsigned int k = 0; k + 1 < dim; ++k)
+                if (e.tangents[k][c] * e.tangents[k][c] > 0.5)
+                  held[dim * j + 1 + k] = 1;
           if (n_held == dim)
             throw InputError(
               "Contact / Contact elements = vertices: the vertex at " +
@@ -190,16 +213,13 @@ namespace dpana
             const auto &F = faces[piece.face];
             for (unsigned int v = 0; v < dim; ++v)
               {
-                unsigned int n_held = 0;
-                for (unsigned int c = 0; c < dim; ++c)
-                  n_held += held_to_zero(body, F.dofs[dim * v + c]);
+                const auto [held, n_held] = held_components(body, F, v);
                 // A fixed vertex is no symmetry plane.
                 if (n_held == dim)
                   continue;
                 for (unsigned int c = 0; c < dim; ++c)
                   {
-                    if (!held_to_zero(body, F.dofs[dim * v + c]) ||
-                        std::abs(e.normal[c]) > 1e-9)
+                    if (!held[c] || std::abs(e.normal[c]) > 1e-9)
                       continue;
                     // tau_2 in 3D (the last tangent: in bounds for the
                     // instance of dim = 2 too, which returned above).

@@ -59,10 +59,8 @@ namespace dpana
       condensation::hold_tangential_tractions(
         problem_,
         condensation::tangentially_held_unknowns(*bodies[0], *surfaces[0]));
-      if (const auto w = condensation::polygon_symmetry_warning(
-            *bodies[0], *surfaces[0], law.cone, law.polygon_sides);
-          !w.empty())
-        warn(w);
+      warn(condensation::polygon_symmetry_warning(
+        *bodies[0], *surfaces[0], law.cone, law.polygon_sides));
       summary_.asymmetry = condensation::largest_asymmetry(parts);
       check_held_by_contact(bodies, problem_);
       if (quiet)

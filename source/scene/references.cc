@@ -494,8 +494,7 @@ namespace dpana
         hertz_point_contact(hertz_load, compliance, radius_1, radius_2);
 
       const dealii::Point<dim> x0 = surface.options().region_centre;
-      if (const auto w = off_axis_centre(surface); !w.empty())
-        warn(w);
+      warn(off_axis_centre(surface));
       std::vector<PressurePiece> pieces;
       double                     a_edge = 0, a_element = 0;
       for (unsigned int j = 0; j < summary.n_elements; ++j)

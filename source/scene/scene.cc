@@ -16,7 +16,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <future>

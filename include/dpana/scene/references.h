@@ -219,8 +219,8 @@ namespace dpana
       std::vector<std::array<double, 3>> comparison_table;
       mutable std::vector<std::string>   warnings_;
 
-      // Prints @p text as a "dpana: warning:" line (on rank 0) and keeps it
-      // for warnings(), once.
+      // Prints @p text (empty: none) as a "dpana: warning:" line (on rank
+      // 0) and keeps it for warnings(), once.
       void
       warn(const std::string &text) const;
 
