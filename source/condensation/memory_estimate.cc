@@ -28,6 +28,8 @@ namespace dpana
         << " GB, in use before " << current / GB << " GB)";
       if (!ordering.empty())
         s << ", ordering " << ordering;
+      if (!method.empty())
+        s << ", " << method << " factor";
       return s.str();
     }
 
@@ -43,6 +45,7 @@ namespace dpana
       m.n_dofs        = n_dofs;
       m.n_gamma       = analysis.n_last;
       m.ordering      = analysis.ordering;
+      m.method        = analysis.supernodal ? "supernodal" : "simplicial";
       m.n_c           = n_c;
       m.current       = resident_memory();
       const double ng = analysis.n_last;

@@ -36,7 +36,7 @@ namespace dpana
                         "cholmod",
                         dealii::Patterns::Selection("cholmod|mumps"),
                         "The sparse factorisation behind Condensation "
-                        "method = schur: 'cholmod' (CHOLMOD's supernodal "
+                        "method = schur: 'cholmod' (CHOLMOD's sparse "
                         "Cholesky, the surface dofs ordered last) or 'mumps' "
                         "(MUMPS' Schur complement on the surface dofs, "
                         "through PETSc). The blocked solves use CHOLMOD.");

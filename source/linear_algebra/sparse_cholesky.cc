@@ -63,6 +63,16 @@ namespace dpana
       // CHOLMOD prints its warnings (e.g. "not positive definite") itself
       // unless told not to; dpana reports them through exceptions instead.
       impl->llt.cholmod().print = 0;
+      // The supernodal or the simplicial method by CHOLMOD's own rule
+      // (set_factor_kind()). Both end as L L^T: the simplicial factor is
+      // converted to it, packed and with its columns in order (final_asis
+      // off; a supernodal factor is L L^T already).
+      set_factor_kind(FactorKind::automatic);
+      cholmod_common &c = impl->llt.cholmod();
+      c.final_asis      = 0;
+      c.final_ll        = 1;
+      c.final_pack      = 1;
+      c.final_monotonic = 1;
     }
 
 
@@ -197,6 +207,17 @@ namespace dpana
           throw NotPositiveDefiniteError(message.str());
         }
       impl->factorized = true;
+    }
+
+
+
+    void
+    SparseCholesky::set_factor_kind(const FactorKind kind)
+    {
+      impl->llt.cholmod().supernodal =
+        kind == FactorKind::automatic  ? CHOLMOD_AUTO :
+        kind == FactorKind::supernodal ? CHOLMOD_SUPERNODAL :
+                                         CHOLMOD_SIMPLICIAL;
     }
 
 

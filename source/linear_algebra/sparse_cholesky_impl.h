@@ -23,10 +23,12 @@ namespace dpana
   {
     namespace internal
     {
-      // CHOLMOD's supernodal LL^T through Eigen's wrapper. The wrapper keeps
-      // the column at which a failed factorisation broke down ("minor") to
-      // itself; this subclass makes it visible for the error message.
-      class SupernodalLLT
+      // CHOLMOD's LL^T through Eigen's wrapper of its supernodal method
+      // (SparseCholesky's constructor lets CHOLMOD choose the simplicial
+      // method for a sparse factor). The wrapper keeps the column at which a
+      // failed factorisation broke down ("minor") to itself; this subclass
+      // makes it visible for the error message.
+      class CholmodLLT
         : public Eigen::CholmodSupernodalLLT<CholmodMatrix, Eigen::Lower>
       {
       public:
@@ -93,6 +95,7 @@ namespace dpana
           const cholmod_factor    &L = *this->m_cholmodFactor;
           const cholmod_common    &c = this->cholmod();
           a.n_unknowns               = L.n;
+          a.supernodal               = L.is_super;
           a.factor_entries           = L.is_super ? double(L.xsize) : c.lnz;
           a.factor_indices           = L.is_super ? double(L.ssize) : c.lnz;
           a.largest_update           = L.is_super ? double(L.maxcsize) : 0.0;
@@ -122,7 +125,7 @@ namespace dpana
 
     struct SparseCholesky::Impl
     {
-      internal::SupernodalLLT                               llt;
+      internal::CholmodLLT                                  llt;
       bool                                                  factorized = false;
       Analysis                                              analysis;
       std::function<void(const SparseCholesky::Analysis &)> check;

@@ -129,7 +129,8 @@ namespace dpana
                   dealii::ExcMessage(
                     "SparseCholesky: factorize_with_last() first."));
       const cholmod_factor &L = impl->llt.factor();
-      AssertThrow(L.is_super && L.is_ll, dealii::ExcInternalError());
+      AssertThrow(L.is_ll && (L.is_super || (L.is_monotonic && L.p != nullptr)),
+                  dealii::ExcInternalError());
       return L;
     }
   } // namespace linear_algebra

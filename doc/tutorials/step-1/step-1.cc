@@ -323,7 +323,7 @@ namespace Step1
   //   are any (here the two symmetry planes hold the body: they stop both
   //   translations and the rotation);
   // - assemble() builds K and f with the constraints eliminated;
-  // - solve() factors the reduced K by CHOLMOD's supernodal Cholesky
+  // - solve() factors the reduced K by CHOLMOD's sparse Cholesky
   //   (dpana::linear_algebra::SparseCholesky) and solves K u = f;
   // - compute_stresses() evaluates sigma = C : eps(u_h) in every cell, a
   //   constant for P1 elements.

@@ -85,8 +85,9 @@ namespace dpana
      * @f[
      *   A = W_\Gamma^T W_\Gamma ,
      * @f]
-     *   one triangular solve with L_22, on the dense supernodes of the
-     *   factor itself (SparseCholesky::solve_schur_factor()), and one
+     *   one triangular solve with L_22, on the factor itself (its dense
+     *   supernodes, or the columns of a simplicial factor:
+     *   SparseCholesky::solve_schur_factor()), and one
      *   symmetric rank update, dense work of size n_Gamma x n_c after the
      *   one factorisation (SparseCholesky::factorize_with_last()); no dense
      *   block of length n_dofs. A is symmetric by construction.

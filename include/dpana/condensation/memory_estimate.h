@@ -18,9 +18,10 @@ namespace dpana
      * estimated from CHOLMOD's symbolic analysis before the numerical
      * factorisation, the expensive part, begins.
      *
-     * The factorisation of the Schur route holds the supernodal factor, in
-     * CHOLMOD's 64-bit interface: its $n_L$ numbers (factor_entries) and
-     * its $n_s$ row indices (factor_indices) of 8 bytes each. While it
+     * The factorisation of the Schur route holds the factor, in CHOLMOD's
+     * 64-bit interface: its $n_L$ numbers (factor_entries) and its $n_s$
+     * row indices (factor_indices) of 8 bytes each (a simplicial factor:
+     * one of each per nonzero). While it
      * runs, CHOLMOD adds the largest dense update matrix of a supernode
      * ($n_C$ numbers, largest_update), a permuted copy of the lower triangle
      * of the matrix ($n_K$ entries of a number and an index) and about
@@ -56,6 +57,9 @@ namespace dpana
       /// CHOLMOD's ordering (SparseCholesky::Analysis::ordering); empty for
       /// MUMPS, whose statistics name its own.
       std::string ordering;
+      /// CHOLMOD's method: "supernodal" or "simplicial" (its choice,
+      /// SparseCholesky::FactorKind); empty for MUMPS.
+      std::string method;
 
       /**
        * The estimated peak, bytes.
@@ -69,7 +73,7 @@ namespace dpana
       /**
        * "1115508 dofs, n_Gamma = 933, n_c = 466: about 1.9 GB (factor
        * 1.2 GB, dense blocks 0.01 GB, now 0.7 GB), ordering automatic:
-       * constrained AMD".
+       * constrained AMD, supernodal factor".
        */
       std::string
       describe() const;

@@ -29,7 +29,7 @@ namespace dpana
 
     /**
      * The factorisation of the reduced stiffness matrix behind the Schur
-     * route (linear_algebra::SchurFactorization): CHOLMOD's supernodal
+     * route (linear_algebra::SchurFactorization): CHOLMOD's sparse
      * Cholesky with the surface unknowns ordered last, or MUMPS' Schur
      * complement through PETSc. The blocked solves always use CHOLMOD.
      */

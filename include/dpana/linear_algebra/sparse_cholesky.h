@@ -37,8 +37,10 @@ namespace dpana
 
     /**
      * A sparse Cholesky factorisation $K = L L^T$ of a symmetric positive
-     * definite matrix, computed once by the supernodal method of CHOLMOD
-     * (SuiteSparse) and then used for as many right-hand sides as needed.
+     * definite matrix, computed once by CHOLMOD (SuiteSparse), by its
+     * supernodal method or, for a sparse enough factor, its simplicial one
+     * (set_factor_kind()), and then used for as many right-hand sides as
+     * needed.
      *
      * <h3>Two ways of handling constraints</h3>
      *
@@ -107,11 +109,13 @@ namespace dpana
         unsigned int n_unknowns = 0;
         /// Unknowns of the last block (0 without factorize_with_last()).
         unsigned int n_last = 0;
-        /// Numbers the supernodal factor stores (its dense supernodes,
-        /// zeros of the amalgamation included): 8 bytes each.
+        /// Whether the factor is supernodal (else simplicial).
+        bool supernodal = true;
+        /// Numbers the factor stores (a supernodal one: its dense
+        /// supernodes, zeros of the amalgamation included): 8 bytes each.
         double factor_entries = 0;
-        /// Row indices the supernodal factor stores (one per row of each
-        /// supernode): 8 bytes each in CHOLMOD's 64-bit interface.
+        /// Row indices the factor stores (a supernodal one: one per row of
+        /// each supernode): 8 bytes each in CHOLMOD's 64-bit interface.
         double factor_indices = 0;
         /// Numbers of the largest dense update matrix of a supernode, the
         /// workspace the numerical factorisation allocates on top of the
@@ -184,6 +188,22 @@ namespace dpana
       set_last_block_ordering(const LastBlockOrdering ordering);
 
       /**
+       * How CHOLMOD computes the factor: automatic (default) is CHOLMOD's
+       * own rule, simplicial where the analysis counts fewer than 40 flops
+       * per entry of the factor (the small bodies), supernodal otherwise.
+       * The other two force one method (for tests and measurements).
+       */
+      enum class FactorKind
+      {
+        automatic,
+        supernodal,
+        simplicial
+      };
+
+      void
+      set_factor_kind(const FactorKind kind);
+
+      /**
        * A function called after the symbolic analysis of every
        * factorisation and before the numerical one, with what the analysis
        * found. It may throw to stop before the expensive part (the memory
@@ -209,8 +229,9 @@ namespace dpana
 
       /**
        * $W \leftarrow L_{22}^{-1} W$ for @p W of n_Gamma rows (in the order
-       * of schur_dofs()), in place, working on the supernodes of the factor
-       * itself (no copy of $L_{22}$).
+       * of schur_dofs()), in place, working on the factor itself (no copy
+       * of $L_{22}$): on its supernodes, or column by column of a simplicial
+       * factor.
        */
       void
       solve_schur_factor(Eigen::MatrixXd &W) const;

@@ -225,7 +225,8 @@ TEST(SparseCholesky, ReducedSystemMatchesExplicitElimination)
 namespace
 {
   void
-  check_last_block(const LastBlockOrdering ordering)
+  check_last_block(const LastBlockOrdering          ordering,
+                   const SparseCholesky::FactorKind kind)
   {
     const unsigned int n = 12, N = n * n;
     TestMatrix         A(n, 0.0);
@@ -247,7 +248,10 @@ namespace
 
     SparseCholesky cholesky;
     cholesky.set_last_block_ordering(ordering);
+    cholesky.set_factor_kind(kind);
     cholesky.factorize_with_last(K, constraints, surface);
+    EXPECT_EQ(cholesky.analysis().supernodal,
+              kind == SparseCholesky::FactorKind::supernodal);
     if (ordering == LastBlockOrdering::automatic)
       EXPECT_EQ(cholesky.analysis().ordering.rfind("automatic: ", 0), 0u);
     else
@@ -300,7 +304,7 @@ namespace
     EXPECT_EQ(
       Eigen::MatrixXd(L22.triangularView<Eigen::StrictlyUpper>()).norm(), 0.0);
 
-    // The forward substitution on the supernodes equals the dense one.
+    // The forward substitution on the factor equals the dense one.
     const Eigen::MatrixXd B = random_matrix(ng, 5);
     Eigen::MatrixXd       W = B;
     cholesky.solve_schur_factor(W);
@@ -337,18 +341,23 @@ namespace
 // boundary) and two scattered interior unknowns, one of them a constrained
 // dof standing for its masters, one a Dirichlet dof standing for none. The
 // solve with this ordering stays the plain K_r^{-1} b. Every ordering of
-// LastBlockOrdering; the solve that skips the leading zeros of the columns
-// (first_rows) equals the dense one too.
+// LastBlockOrdering, on a supernodal and on a simplicial factor (the one
+// CHOLMOD's rule takes for this small matrix); the solve that skips the
+// leading zeros of the columns (first_rows) equals the dense one too.
 TEST(SparseCholesky, LastBlockIsFactorOfSchurComplement)
 {
-  for (const auto ordering : {LastBlockOrdering::moved_last,
-                              LastBlockOrdering::constrained_amd,
-                              LastBlockOrdering::interior_nested_dissection,
-                              LastBlockOrdering::automatic})
-    {
-      SCOPED_TRACE(to_string(ordering));
-      check_last_block(ordering);
-    }
+  using Kind = SparseCholesky::FactorKind;
+  for (const auto kind : {Kind::supernodal, Kind::simplicial})
+    for (const auto ordering : {LastBlockOrdering::moved_last,
+                                LastBlockOrdering::constrained_amd,
+                                LastBlockOrdering::interior_nested_dissection,
+                                LastBlockOrdering::automatic})
+      {
+        SCOPED_TRACE(to_string(ordering) + (kind == Kind::supernodal ?
+                                              ", supernodal" :
+                                              ", simplicial"));
+        check_last_block(ordering, kind);
+      }
 }
 
 
@@ -468,6 +477,31 @@ TEST(SparseCholesky, AutomaticOrderingFollowsCholmodsTest)
 
 
 
+// The factor kind follows CHOLMOD's rule (cholmod_core.h, supernodal =
+// CHOLMOD_AUTO, supernodal_switch = 40): supernodal where the factorisation
+// costs at least 40 flops per nonzero of the factor, simplicial below. The
+// 2D grid of 12 x 12 unknowns falls below (a body of a few hundred unknowns
+// does too), the 3D grid of 24^3 above (693 flops per entry), so that both
+// kinds are taken.
+TEST(SparseCholesky, FactorKindFollowsCholmodsRule)
+{
+  std::vector<bool> kinds;
+  for (const auto &[d, n] : {std::pair{2u, 12u}, std::pair{3u, 24u}})
+    {
+      SCOPED_TRACE("dimension " + std::to_string(d));
+      const GridLaplacian            A(d, n);
+      const SparseCholesky::Analysis a =
+        analysis_with_face_last(A,
+                                d == 2 ? n : n * n,
+                                LastBlockOrdering::automatic);
+      EXPECT_EQ(a.supernodal, a.factor_flops / a.factor_nonzeros >= 40.0);
+      kinds.push_back(a.supernodal);
+    }
+  EXPECT_EQ(kinds, (std::vector<bool>{false, true}));
+}
+
+
+
 // CHOLMOD was compiled to run loops of its supernodal factorisation on 4
 // OpenMP threads; dpana keeps them on the thread that factorises
 // (blas_threads.h). OpenMP keeps the threads it started for a thread alive
@@ -486,12 +520,56 @@ TEST(SparseCholesky, FactorisationStartsNoThread)
   std::thread factorising([&] {
     before = threads();
     SparseCholesky cholesky;
+    cholesky.set_factor_kind(SparseCholesky::FactorKind::supernodal);
     cholesky.factorize(A.matrix);
     after = threads();
   });
   factorising.join();
   EXPECT_EQ(after, before);
 }
+
+
+
+namespace
+{
+  void
+  check_refusals(const SparseCholesky::FactorKind kind)
+  {
+    TestMatrix     indefinite(10, -1.0);
+    SparseCholesky cholesky;
+    cholesky.set_factor_kind(kind);
+    EXPECT_THROW(cholesky.factorize(indefinite.matrix),
+                 dpana::linear_algebra::NotPositiveDefiniteError);
+    EXPECT_FALSE(cholesky.is_factorized());
+
+    // Graph Laplacian of a path: L = tridiag(-1, 2, -1) with 1 at both ends.
+    const unsigned int             N = 50;
+    dealii::DynamicSparsityPattern dsp(N, N);
+    for (unsigned int i = 0; i < N; ++i)
+      for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, N - 1);
+           ++j)
+        dsp.add(i, j);
+    dealii::SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    dealii::SparseMatrix<double> L(pattern);
+    for (unsigned int i = 0; i + 1 < N; ++i)
+      {
+        L.add(i, i, 1.0);
+        L.add(i + 1, i + 1, 1.0);
+        L.add(i, i + 1, -1.0);
+        L.add(i + 1, i, -1.0);
+      }
+    EXPECT_THROW(cholesky.factorize(L),
+                 dpana::linear_algebra::NotPositiveDefiniteError);
+
+    // Fixing one end removes the kernel: now it must factor.
+    dealii::AffineConstraints<double> constraints;
+    constraints.add_line(0);
+    constraints.close();
+    EXPECT_NO_THROW(cholesky.factorize(L, constraints));
+    EXPECT_TRUE(cholesky.is_factorized());
+  }
+} // namespace
 
 
 
@@ -502,37 +580,12 @@ TEST(SparseCholesky, FactorisationStartsNoThread)
 // NotPositiveDefiniteError, never "solved".
 TEST(SparseCholesky, RefusesMatricesThatAreNotPositiveDefinite)
 {
-  TestMatrix     indefinite(10, -1.0);
-  SparseCholesky cholesky;
-  EXPECT_THROW(cholesky.factorize(indefinite.matrix),
-               dpana::linear_algebra::NotPositiveDefiniteError);
-  EXPECT_FALSE(cholesky.is_factorized());
-
-  // Graph Laplacian of a path: L = tridiag(-1, 2, -1) with 1 at both ends.
-  const unsigned int             N = 50;
-  dealii::DynamicSparsityPattern dsp(N, N);
-  for (unsigned int i = 0; i < N; ++i)
-    for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, N - 1); ++j)
-      dsp.add(i, j);
-  dealii::SparsityPattern pattern;
-  pattern.copy_from(dsp);
-  dealii::SparseMatrix<double> L(pattern);
-  for (unsigned int i = 0; i + 1 < N; ++i)
+  using Kind = SparseCholesky::FactorKind;
+  for (const auto kind : {Kind::supernodal, Kind::simplicial})
     {
-      L.add(i, i, 1.0);
-      L.add(i + 1, i + 1, 1.0);
-      L.add(i, i + 1, -1.0);
-      L.add(i + 1, i, -1.0);
+      SCOPED_TRACE(kind == Kind::supernodal ? "supernodal" : "simplicial");
+      check_refusals(kind);
     }
-  EXPECT_THROW(cholesky.factorize(L),
-               dpana::linear_algebra::NotPositiveDefiniteError);
-
-  // Fixing one end removes the kernel: now it must factor.
-  dealii::AffineConstraints<double> constraints;
-  constraints.add_line(0);
-  constraints.close();
-  EXPECT_NO_THROW(cholesky.factorize(L, constraints));
-  EXPECT_TRUE(cholesky.is_factorized());
 }
 
 
