@@ -55,7 +55,9 @@ namespace dpana
 
 
 
-      // The columns n0 .. n - 1 of a simplicial factor.
+      // The columns n0 .. n - 1 of a simplicial factor. Every row of a
+      // column j >= n0 is >= j, hence in the last block (also on the
+      // supernodes below).
       void
       read_simplicial(const cholmod_factor &L,
                       const CholmodIndex    n0,
@@ -138,11 +140,12 @@ namespace dpana
                        const std::vector<int> &first_rows)
       {
         const SupernodalArrays F(L);
-        const CholmodIndex    *super = F.super, *pi = F.pi, *px = F.px;
-        const double          *x   = F.x;
-        const int              ldw = W.rows();
-        const double           one = 1.0, zero = 0.0;
-        std::vector<double>    update;
+        const CholmodIndex    *super = F.super, *pi = F.pi, *px = F.px,
+                           *rows = F.rows;
+        const double       *x    = F.x;
+        const int           ldw  = W.rows();
+        const double        one = 1.0, zero = 0.0;
+        std::vector<double> update;
         for (std::size_t s = 0; s < L.nsuper; ++s)
           {
             if (super[s + 1] <= n0)
@@ -190,7 +193,7 @@ namespace dpana
                    &zero,
                    update.data(),
                    &nbelow);
-            const CholmodIndex *below = F.rows + pi[s] + nscol;
+            const CholmodIndex *below = rows + pi[s] + nscol;
             for (int c = 0; c < nrhs; ++c)
               {
                 double       *w = W.data() + std::size_t(c) * ldw - n0;

@@ -190,7 +190,7 @@ namespace dpana
       /**
        * How CHOLMOD computes the factor: automatic (default) is CHOLMOD's
        * own rule, simplicial where the analysis counts fewer than 40 flops
-       * per entry of the factor (the small bodies), supernodal otherwise.
+       * per nonzero of the factor (the small bodies), supernodal otherwise.
        * The other two force one method (for tests and measurements).
        */
       enum class FactorKind
