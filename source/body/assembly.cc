@@ -28,21 +28,41 @@ namespace dpana
   template <int dim>
   Body<dim>::CellValues::CellValues(const dealii::Mapping<dim>       &mapping,
                                     const dealii::FiniteElement<dim> &fe)
-    : quadrature(2)
-    , face_quadrature(2)
-    , fe_values(mapping,
-                fe,
-                quadrature,
-                dealii::update_values | dealii::update_quadrature_points |
-                  dealii::update_JxW_values)
-    , fe_face_values(mapping,
-                     fe,
-                     face_quadrature,
-                     dealii::update_values | dealii::update_normal_vectors |
-                       dealii::update_JxW_values)
+    : mapping(mapping)
+    , fe(fe)
     , eps(fe.n_dofs_per_cell())
     , div(fe.n_dofs_per_cell())
   {
+  }
+
+
+
+  template <int dim>
+  dealii::FEValues<dim> &
+  Body<dim>::CellValues::fe_values()
+  {
+    if (!cell)
+      cell.emplace(mapping,
+                   fe,
+                   dealii::QGaussSimplex<dim>(2),
+                   dealii::update_values | dealii::update_quadrature_points |
+                     dealii::update_JxW_values);
+    return *cell;
+  }
+
+
+
+  template <int dim>
+  dealii::FEFaceValues<dim> &
+  Body<dim>::CellValues::fe_face_values()
+  {
+    if (!face)
+      face.emplace(mapping,
+                   fe,
+                   dealii::QGaussSimplex<dim - 1>(2),
+                   dealii::update_values | dealii::update_normal_vectors |
+                     dealii::update_JxW_values);
+    return *face;
   }
 
 
@@ -55,10 +75,9 @@ namespace dpana
     dealii::FullMatrix<double>                                   &cell_matrix,
     dealii::Vector<double> &cell_rhs) const
   {
-    auto              &fe_values = values.fe_values;
-    const unsigned int n         = fe_.n_dofs_per_cell();
-    const double       lambda    = material_.lambda(dim);
-    const double       mu        = material_.mu();
+    const unsigned int n      = fe_.n_dofs_per_cell();
+    const double       lambda = material_.lambda(dim);
+    const double       mu     = material_.mu();
 
     cell_matrix = 0;
     cell_rhs    = 0;
@@ -91,6 +110,7 @@ namespace dpana
 
     if (loads_.body_force)
       {
+        auto &fe_values = values.fe_values();
         fe_values.reinit(cell);
         dealii::Vector<double> b(dim);
         for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -106,7 +126,7 @@ namespace dpana
       }
 
     if (!loads_.pressure.empty() || !loads_.traction.empty())
-      assemble_boundary_loads(cell, values.fe_face_values, cell_rhs);
+      assemble_boundary_loads(cell, values.fe_face_values(), cell_rhs);
   }
 
 

@@ -159,7 +159,8 @@ namespace dpana
         return;
       if (uses_eigen())
         {
-          R = llt.solve(R);
+          for (Eigen::Index j = 0; j < R.cols(); ++j)
+            llt.solveInPlace(R.col(j));
           return;
         }
       const ThreadsForSize threads(rows());
@@ -205,8 +206,9 @@ namespace dpana
           "DenseCholesky::inverse() needs a factor in double precision");
       if (factor.size() == 0)
         {
-          const Eigen::Index    n = llt.matrixLLT().rows();
-          const Eigen::MatrixXd X = llt.solve(Eigen::MatrixXd::Identity(n, n));
+          const Eigen::Index n = llt.matrixLLT().rows();
+          Eigen::MatrixXd    X = Eigen::MatrixXd::Identity(n, n);
+          solve_in_place(X);
           return 0.5 * (X + X.transpose()); // symmetric in full
         }
       Eigen::MatrixXd      X = factor;
@@ -247,10 +249,11 @@ namespace dpana
         return;
       if (uses_eigen())
         {
-          if (transpose)
-            llt.matrixU().solveInPlace(R);
-          else
-            llt.matrixL().solveInPlace(R);
+          for (Eigen::Index j = 0; j < R.cols(); ++j)
+            if (transpose)
+              llt.matrixU().solveInPlace(R.col(j));
+            else
+              llt.matrixL().solveInPlace(R.col(j));
           return;
         }
       const ThreadsForSize threads(rows());

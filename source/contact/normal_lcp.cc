@@ -27,8 +27,13 @@ namespace dpana
         {
           const double g2 = G.squaredNorm();
           penalty = (g2 > 0.0) ? options.augmentation * M.trace() / g2 : 0.0;
+          // penalty G^T G as a sum of outer products, one per equality row
+          // (there are a few): Eigen's matrix product would size its cache
+          // blocks first, which costs more than the update at these sizes.
           M_augmented = M;
-          M_augmented.noalias() += penalty * G.transpose() * G;
+          for (Eigen::Index r = 0; r < G.rows(); ++r)
+            M_augmented.noalias() +=
+              (penalty * G.row(r).transpose()) * G.row(r);
           inverse_diagonal_augmented = M_augmented.diagonal().cwiseInverse();
         }
       w.resize(M.rows());
