@@ -70,7 +70,8 @@ cmake --build "$build" -j "${DPANA_JOBS:-2}" --target dpana
 # The families GetFEM also solves: those the sweep is asked for (all by
 # default). They are timed side by side, dpana then GetFEM per family, and
 # every level runs twice (DPANA_REPEAT; a level under 0.1 s five times,
-# records.py), its fastest run kept (the machine may be shared).
+# one under 1 s three times, records.py), its fastest run kept (the machine
+# may be shared).
 repeat="${DPANA_REPEAT:-2}"
 peer_all=(hertz_rigid_mu0 hertz_rigid_mu0_r10 hertz_rigid_mu0_graded
   hertz_rigid_mu1_graded hertz_ratio_1_mu0_graded hertz_ratio_1_mu0_graded_block
