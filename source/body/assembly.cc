@@ -28,10 +28,10 @@ namespace dpana
   template <int dim>
   Body<dim>::CellValues::CellValues(const dealii::Mapping<dim>       &mapping,
                                     const dealii::FiniteElement<dim> &fe)
-    : mapping(mapping)
-    , fe(fe)
-    , eps(fe.n_dofs_per_cell())
+    : eps(fe.n_dofs_per_cell())
     , div(fe.n_dofs_per_cell())
+    , mapping(mapping)
+    , fe(fe)
   {
   }
 

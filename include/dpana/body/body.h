@@ -528,18 +528,16 @@ namespace dpana
       fe_values();
       dealii::FEFaceValues<dim> &
       fe_face_values();
+      // The strains and divergences of the shape functions on the cell
+      // (constant for P1), kept from cell to cell.
+      std::vector<dealii::SymmetricTensor<2, dim>> eps;
+      std::vector<double>                          div;
 
     private:
       const dealii::Mapping<dim>              &mapping;
       const dealii::FiniteElement<dim>        &fe;
       std::optional<dealii::FEValues<dim>>     cell;
       std::optional<dealii::FEFaceValues<dim>> face;
-
-    public:
-      // The strains and divergences of the shape functions on the cell
-      // (constant for P1), kept from cell to cell.
-      std::vector<dealii::SymmetricTensor<2, dim>> eps;
-      std::vector<double>                          div;
     };
     void
     assemble_cell(
