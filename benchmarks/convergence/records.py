@@ -5,6 +5,8 @@ a level, the progress line of a level and the results file of a family
 the load average at the start and one record per level)."""
 
 import argparse
+import ctypes
+import functools
 import json
 import os
 
@@ -73,7 +75,38 @@ def write(out, name, code, records, load):
     prefix = "" if code == "dpana" else f"{code}_"
     with open(os.path.join(out, f"{prefix}{name}.json"), "w") as f:
         json.dump({"family": name, "code": code, "loadavg": load,
+                   "blas_kernels": os.environ.get("OPENBLAS_CORETYPE",
+                                                  blas_kernels()),
                    "records": records}, f, indent=1)
+
+
+@functools.lru_cache(maxsize=None)
+def blas_kernels():
+    """The OpenBLAS kernels that the dpana command names for its runs
+    (OPENBLAS_CORETYPE, source/launcher/launcher.cc: the kernels of the
+    processor's vector instructions when OpenBLAS would run its generic
+    "Prescott" ones, as OpenBLAS 0.3.21 does on the Xeons it does not know),
+    or None where OpenBLAS keeps its own choice. The GetFEM sweep gives its
+    runs the same kernels: both codes compute their dense blocks with the
+    same BLAS on the same instructions."""
+    if "OPENBLAS_CORETYPE" in os.environ:
+        return None
+    try:
+        blas = ctypes.CDLL("libopenblas.so.0")
+    except OSError:
+        return None
+    blas.openblas_get_corename.restype = ctypes.c_char_p
+    if blas.openblas_get_corename().decode().lower() != "prescott":
+        return None
+    with open("/proc/cpuinfo") as f:
+        flags = next((line.split(":", 1)[1].split() for line in f
+                      if line.startswith("flags")), [])
+    if {"avx512f", "avx512cd", "avx512bw", "avx512dq",
+            "avx512vl"} <= set(flags):
+        return "SkylakeX"
+    if {"avx2", "fma"} <= set(flags):
+        return "Haswell"
+    return None
 
 
 def load_average():

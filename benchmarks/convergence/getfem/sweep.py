@@ -169,15 +169,20 @@ def h_of(args, level):
     return H[args[0]](level)
 
 
-def huge_page_environment():
+def machine_environment():
     """The environment of a GetFEM run: as dpana's (the dpana command asks
-    malloc for transparent huge pages, source/launcher/launcher.cc), so
-    that the two codes pay the same page faults."""
+    malloc for transparent huge pages and names OpenBLAS' kernels where
+    OpenBLAS would run its generic ones, source/launcher/launcher.cc), so
+    that the two codes pay the same page faults and compute their dense
+    blocks on the same instructions."""
     env = dict(os.environ)
     given = env.get("GLIBC_TUNABLES", "")
     if "glibc.malloc.hugetlb" not in given:
         env["GLIBC_TUNABLES"] = ":".join(
             t for t in (given, "glibc.malloc.hugetlb=1") if t)
+    kernels = records_io.blas_kernels()
+    if kernels is not None:
+        env["OPENBLAS_CORETYPE"] = kernels
     return env
 
 
@@ -186,7 +191,7 @@ def run_level(python, args, level, timeout):
     try:
         proc = subprocess.run([python, *args, "--level", str(level)],
                               cwd=HERE, capture_output=True, text=True,
-                              timeout=timeout, env=huge_page_environment())
+                              timeout=timeout, env=machine_environment())
     except subprocess.TimeoutExpired:
         return {"level": level, "failed": f"timeout {timeout} s"}
     wall = time.perf_counter() - start
