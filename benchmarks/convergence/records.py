@@ -83,10 +83,10 @@ def write(out, name, code, records, load):
 @functools.lru_cache(maxsize=None)
 def blas_kernels():
     """The OpenBLAS kernels that the dpana command names for its runs
-    (OPENBLAS_CORETYPE, source/launcher/launcher.cc: the kernels of the
-    processor's vector instructions when OpenBLAS would run its generic
-    "Prescott" ones, as OpenBLAS 0.3.21 does on the Xeons it does not know),
-    or None where OpenBLAS keeps its own choice. The GetFEM sweep gives its
+    (OPENBLAS_CORETYPE, source/launcher/launcher.cc: the AVX2 kernels when
+    OpenBLAS would run its generic "Prescott" ones on a processor with AVX2
+    and FMA, as OpenBLAS 0.3.21 does on the Xeons it does not know), or
+    None where OpenBLAS keeps its own choice. The GetFEM sweep gives its
     runs the same kernels: both codes compute their dense blocks with the
     same BLAS on the same instructions."""
     if "OPENBLAS_CORETYPE" in os.environ:
@@ -101,14 +101,4 @@ def blas_kernels():
     with open("/proc/cpuinfo") as f:
         flags = next((line.split(":", 1)[1].split() for line in f
                       if line.startswith("flags")), [])
-    if {"avx512f", "avx512cd", "avx512bw", "avx512dq",
-            "avx512vl"} <= set(flags):
-        return "SkylakeX"
-    if {"avx2", "fma"} <= set(flags):
-        return "Haswell"
-    return None
-
-
-def load_average():
-    with open("/proc/loadavg") as f:
-        return f.read().split()[:3]
+    return "Haswell" if {"avx2", "fma"} <= set(flags) else None

@@ -28,14 +28,17 @@
 // processor's model when it is loaded; a model it does not know gets its
 // generic SSE3 kernels ("Prescott"). OpenBLAS 0.3.21 of Debian 12 does not
 // know the Xeons of family 6, model 207 (those of the machine of
-// benchmarks/convergence, which have AVX-512): there the factorisation of the
-// quarter sphere at 36 000 dofs took 5.2 to 7.1 s with "Prescott" and 1.5 to
-// 1.7 s with the AVX-512 kernels ("SkylakeX"), its condensation 1.9 s and
-// 0.45 s, to the same answers. So when OpenBLAS reports its generic kernels
-// on a processor with AVX-512 (F, CD, BW, DQ, VL) or AVX2 and FMA, the kernels
-// of that instruction set are named in OPENBLAS_CORETYPE, the variable
-// OpenBLAS reads when it is loaded. A given OPENBLAS_CORETYPE is left as it
-// is; a processor whose model OpenBLAS knows keeps OpenBLAS' own choice.
+// benchmarks/convergence): there the quarter sphere at 36 891 dofs took
+// about 9.3 s to solve with "Prescott" and 2.8-2.9 s with the AVX2 kernels
+// ("Haswell"), to the same answers. So when OpenBLAS reports its generic
+// kernels on a processor with AVX2 and FMA, OPENBLAS_CORETYPE, which
+// OpenBLAS reads when it is loaded, names the AVX2 kernels. Not the AVX-512
+// ones, though that processor has AVX-512 and they were faster still (2.0-2.6
+// s): with them GetFEM's Newton iteration broke down on one scene of the
+// convergence benchmark where it converges with both others, and OpenBLAS'
+// issue tracker reports wrong results of its AVX-512 kernels in builds for
+// several processors, as Debian's is. A given OPENBLAS_CORETYPE is left as
+// it is; a processor whose model OpenBLAS knows keeps OpenBLAS' own choice.
 
 #include <cerrno>
 #include <cstdio>
@@ -103,21 +106,15 @@ namespace
 
 
 
-  // The OpenBLAS kernels of this processor's vector instructions when
-  // OpenBLAS would run its generic ones; null to leave its choice (libgcc's
-  // tests include the operating system's support of the registers).
+  // The OpenBLAS kernels of AVX2 when OpenBLAS would run its generic ones on
+  // a processor with AVX2 and FMA; null to leave its choice (libgcc's tests
+  // include the operating system's support of the registers).
   const char *
   blas_kernels()
   {
     if (std::getenv("OPENBLAS_CORETYPE") != nullptr || !openblas_is_generic())
       return nullptr;
     __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f") &&
-        __builtin_cpu_supports("avx512cd") &&
-        __builtin_cpu_supports("avx512bw") &&
-        __builtin_cpu_supports("avx512dq") &&
-        __builtin_cpu_supports("avx512vl"))
-      return "SkylakeX";
     if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
       return "Haswell";
     return nullptr;
