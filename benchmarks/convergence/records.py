@@ -102,3 +102,8 @@ def blas_kernels():
         flags = next((line.split(":", 1)[1].split() for line in f
                       if line.startswith("flags")), [])
     return "Haswell" if {"avx2", "fma"} <= set(flags) else None
+
+
+def load_average():
+    with open("/proc/loadavg") as f:
+        return f.read().split()[:3]

@@ -29,7 +29,7 @@
 // generic SSE3 kernels ("Prescott"). OpenBLAS 0.3.21 of Debian 12 does not
 // know the Xeons of family 6, model 207 (those of the machine of
 // benchmarks/convergence): there the quarter sphere at 36 891 dofs took
-// about 9.3 s to solve with "Prescott" and 2.8-2.9 s with the AVX2 kernels
+// 7.6-9.5 s to solve with "Prescott" and 2.8-2.9 s with the AVX2 kernels
 // ("Haswell"), to the same answers. So when OpenBLAS reports its generic
 // kernels on a processor with AVX2 and FMA, OPENBLAS_CORETYPE, which
 // OpenBLAS reads when it is loaded, names the AVX2 kernels. Not the AVX-512
