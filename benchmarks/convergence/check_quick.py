@@ -50,10 +50,14 @@
 """
 
 import argparse
+import json
+import os
 import sys
+import tempfile
 
 import analyse
 import families
+import records
 import richardson
 from sweep import run_level
 
@@ -98,9 +102,9 @@ def check_a_m(dpana, prm_dir, family, levels, load, a_ref, bound, label,
               fail):
     """Runs the levels of family; fails unless each carries the whole load
     (to 1e-9) and the error of a_m against a_ref decreases from level to
-    level and is at most bound at the last. Returns the last level's
-    record, or None when a level failed to run."""
-    errors = []
+    level and is at most bound at the last. Returns the levels' records,
+    or None when a level failed to run."""
+    errors, runs = [], []
     for level, (h, edits) in enumerate(levels):
         r = run_level(dpana, family, prm_dir, level, h, edits, 300)
         if "failed" in r:
@@ -108,6 +112,7 @@ def check_a_m(dpana, prm_dir, family, levels, load, a_ref, bound, label,
             return None
         if abs(r["resultant"] - load) > 1e-9 * load:
             fail(f"{label} level {level}: resultant {r['resultant']}")
+        runs.append(r)
         errors.append(abs(r["a_m"] - a_ref) / a_ref)
         print(f"{label} level {level}: dofs {r['dofs']}, a_m {r['a_m']:.6f} "
               f"(error {errors[-1]:.2e}), N_max {r['N_max']:.6g}")
@@ -116,19 +121,36 @@ def check_a_m(dpana, prm_dir, family, levels, load, a_ref, bound, label,
     if errors[-1] > bound:
         fail(f"{label} a_m error at level {len(errors) - 1}: "
              f"{errors[-1]:.2e} > {bound:g}")
-    return r
+    return runs
 
 
 def check_hertz(dpana, prm_dir, fail):
     family = families.BY_NAME["hertz_rigid_mu0_d_shaped"]
     levels = [(h, e) for h, e in family.levels if h in LEVELS]
-    r = check_a_m(dpana, prm_dir, family, levels, 1e5, A_M_REF, 3e-3,
-                  "hertz", fail)
-    if r is None:
-        return
-    n_error = abs(r["N_max"] - N_MAX_REF) / N_MAX_REF
+    runs = check_a_m(dpana, prm_dir, family, levels, 1e5, A_M_REF, 3e-3,
+                     "hertz", fail)
+    if runs is None:
+        return None
+    n_error = abs(runs[-1]["N_max"] - N_MAX_REF) / N_MAX_REF
     if n_error > 3e-3:
         fail(f"N_max error at level 2: {n_error:.2e} > 3e-3")
+    return runs
+
+
+def check_results_file(runs, fail):
+    """The records of a family through records.write() and analyse.load()."""
+    with tempfile.TemporaryDirectory() as out:
+        records.write(out, "hertz_rigid_mu0_d_shaped", "dpana", runs,
+                      records.load_average())
+        with open(os.path.join(out, "hertz_rigid_mu0_d_shaped.json")) as f:
+            data = json.load(f)
+        if len(data["loadavg"]) != 3 or "blas_kernels" not in data:
+            fail(f"results file: load average or BLAS kernels missing: "
+                 f"{ {k: v for k, v in data.items() if k != 'records'} }")
+        back = analyse.load(out).get(("dpana", "hertz_rigid_mu0_d_shaped"))
+        if back is None or back["ok"] != runs:
+            fail("results file: the records read back differ from those "
+                 "written")
 
 
 def check_sphere_nested(dpana, prm_dir, fail):
@@ -151,7 +173,9 @@ def main():
 
     check_richardson(fail)
     check_equal_error(fail)
-    check_hertz(args.dpana, args.prm_dir, fail)
+    runs = check_hertz(args.dpana, args.prm_dir, fail)
+    if runs is not None:
+        check_results_file(runs, fail)
     check_sphere_nested(args.dpana, args.prm_dir, fail)
     print("check_quick: " + ("FAILED" if failures else "passed"))
     sys.exit(1 if failures else 0)
