@@ -14,9 +14,10 @@
 // 12.4 to 12.8 us per page), which made half the solve time of a 2D run of
 // 19 350 dofs; with 2 MiB pages it takes 1/512 of the faults. The tunable is
 // read by the dynamic loader when a program starts, so it cannot be set from
-// inside dpana-solver: hence this small program, which loads no library but
-// the C one and replaces itself by dpana-solver (execv: same process, same
-// MPI environment under mpirun).
+// inside dpana-solver: hence this small program, which links no library but
+// the C one (it loads OpenBLAS only to ask which kernels it chose, below) and
+// replaces itself by dpana-solver (execv: same process, same MPI environment
+// under mpirun).
 //
 // A GLIBC_TUNABLES that names glibc.malloc.hugetlb already is left as it is
 // (glibc.malloc.hugetlb=0 turns the huge pages off); other tunables in it
