@@ -75,9 +75,20 @@ def write(out, name, code, records, load):
     prefix = "" if code == "dpana" else f"{code}_"
     with open(os.path.join(out, f"{prefix}{name}.json"), "w") as f:
         json.dump({"family": name, "code": code, "loadavg": load,
-                   "blas_kernels": os.environ.get("OPENBLAS_CORETYPE",
-                                                  blas_kernels()),
+                   "blas_kernels": kernels_in_use(),
                    "records": records}, f, indent=1)
+
+
+@functools.lru_cache(maxsize=None)
+def openblas_core():
+    """The kernels OpenBLAS runs in this process (its own choice, or the
+    OPENBLAS_CORETYPE of this environment); None without OpenBLAS."""
+    try:
+        blas = ctypes.CDLL("libopenblas.so.0")
+    except OSError:
+        return None
+    blas.openblas_get_corename.restype = ctypes.c_char_p
+    return blas.openblas_get_corename().decode()
 
 
 @functools.lru_cache(maxsize=None)
@@ -91,17 +102,23 @@ def blas_kernels():
     same BLAS on the same instructions."""
     if "OPENBLAS_CORETYPE" in os.environ:
         return None
-    try:
-        blas = ctypes.CDLL("libopenblas.so.0")
-    except OSError:
-        return None
-    blas.openblas_get_corename.restype = ctypes.c_char_p
-    if blas.openblas_get_corename().decode().lower() != "prescott":
+    core = openblas_core()
+    if core is None or core.lower() != "prescott":
         return None
     with open("/proc/cpuinfo") as f:
         flags = next((line.split(":", 1)[1].split() for line in f
                       if line.startswith("flags")), [])
     return "Haswell" if {"avx2", "fma"} <= set(flags) else None
+
+
+def kernels_in_use():
+    """The OpenBLAS kernels the runs of a sweep compute with: the given
+    OPENBLAS_CORETYPE, else those the dpana command names, else OpenBLAS'
+    own choice on this processor (None without OpenBLAS). Recorded in each
+    results file, so that records of different days, perhaps on different
+    processors, say which kernels they ran."""
+    return (os.environ.get("OPENBLAS_CORETYPE") or blas_kernels()
+            or openblas_core())
 
 
 def load_average():
