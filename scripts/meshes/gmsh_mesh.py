@@ -17,8 +17,10 @@ def write_mesh(program, geo, dimension, values, output, key_suffix="",
     the volume again after the script, on the refined surfaces. The command
     (with `key_suffix`) is stored in OUTPUT.args; an existing output with
     the same stored command is kept. `after(output)` runs on a new mesh
-    before the command is stored. A failing gmsh stops with one line
-    `PROGRAM: error: ...`."""
+    before the command is stored. The mesh is written under a name of this
+    process and renamed into place when complete, so that a program reading
+    `output` while another writes it (tests run in parallel) never reads
+    half a file. A failing gmsh stops with one line `PROGRAM: error: ...`."""
     command = ["gmsh", "-v", "2", os.path.join(HERE, geo)]
     if refinements > 0:
         values = dict(values, Refinements=refinements)
@@ -27,27 +29,33 @@ def write_mesh(program, geo, dimension, values, output, key_suffix="",
     for name, value in sorted(values.items()):
         command[1:1] = ["-setnumber", name, repr(float(value))]
     key = " ".join(command) + key_suffix
-    if refinements > 0:
-        command += ["-setstring", "Output", os.path.abspath(output),
-                    "-parse_and_exit"]
-    else:
-        command += ["-o", output]
     stamp = output + ".args"
     if (os.path.exists(output) and os.path.exists(stamp)
             and open(stamp).read() == key):
         return
+    base, extension = os.path.splitext(output)
+    partial = "%s.part%d%s" % (base, os.getpid(), extension)
+    if refinements > 0:
+        command += ["-setstring", "Output", os.path.abspath(partial),
+                    "-parse_and_exit"]
+    else:
+        command += ["-o", partial]
     if os.path.dirname(output):
         os.makedirs(os.path.dirname(output), exist_ok=True)
     try:
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     except (OSError, subprocess.CalledProcessError) as e:
+        if os.path.exists(partial):
+            os.remove(partial)
         sys.exit("%s: error: gmsh failed (%s)" % (program, e))
-    if not os.path.exists(output):
+    if not os.path.exists(partial):
         sys.exit("%s: error: gmsh wrote no mesh to %s" % (program, output))
     if after is not None:
-        after(output)
-    with open(stamp, "w") as f:
+        after(partial)
+    os.replace(partial, output)
+    with open(partial + ".args", "w") as f:
         f.write(key)
+    os.replace(partial + ".args", stamp)
 
 
 def element_counts(path):
