@@ -18,6 +18,7 @@
 #include <random>
 #include <string>
 
+#include "scratch_path.h"
 #include <gtest/gtest.h>
 
 namespace
@@ -31,9 +32,7 @@ namespace
   {
   public:
     explicit ScratchFile(const std::string &name)
-      : path((std::filesystem::temp_directory_path() /
-              ("dpana_fclib_test_" + name + ".hdf5"))
-               .string())
+      : path(dpana::test::scratch_path("fclib_test_" + name + ".hdf5").string())
     {
       std::filesystem::remove(path);
     }

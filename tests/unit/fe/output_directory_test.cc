@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 
+#include "scratch_path.h"
 #include <gtest/gtest.h>
 
 namespace
@@ -26,7 +27,7 @@ namespace
   fs::path
   sandbox(const std::string &name)
   {
-    const fs::path p = fs::temp_directory_path() / ("dpana_" + name);
+    const fs::path p = dpana::test::scratch_path(name);
     fs::remove_all(p);
     fs::create_directories(p);
     return p;

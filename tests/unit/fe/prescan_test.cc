@@ -15,22 +15,36 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
+#include "scratch_path.h"
 #include <gtest/gtest.h>
 
 using namespace dpana;
 
 namespace
 {
+  // The files write_file() made, removed when the test program ends.
+  struct ScratchFiles
+  {
+    std::vector<std::string> names;
+    ~ScratchFiles()
+    {
+      for (const auto &name : names)
+        std::filesystem::remove(name);
+    }
+  } scratch_files;
+
   // Writes @p text to a file of the temporary directory and returns its
   // name.
   std::string
   write_file(const std::string &name, const std::string &text)
   {
     const std::string file =
-      (std::filesystem::temp_directory_path() / ("dpana_prescan_" + name))
-        .string();
+      dpana::test::scratch_path("prescan_" + name).string();
     std::ofstream(file) << text;
+    scratch_files.names.push_back(file);
     return file;
   }
 } // namespace

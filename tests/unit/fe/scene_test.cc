@@ -16,6 +16,7 @@
 #include <string>
 
 #include "scene_test_tools.h"
+#include "scratch_path.h"
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -120,7 +121,7 @@ TEST(Scene, ContactPhasesOneByOne)
 TEST(Scene, ContactOutputFilesAndSummary)
 {
   namespace fs         = std::filesystem;
-  const fs::path where = fs::temp_directory_path() / "dpana_scene_test";
+  const fs::path where = dpana::test::scratch_path("scene_test");
   fs::remove_all(where);
   auto s = make_scene<2>(receding_contact(where.string()));
   s->run(true);
