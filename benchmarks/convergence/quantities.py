@@ -101,6 +101,9 @@ def run_quantities(directory, dim, exact_normal=None):
         "peak_memory_mb": max(summary["peak_memory_mb"].values()),
         "a": contact.get("contact_half_width"),
         "a_element": contact.get("contact_half_width_element"),
+        # The processor and BLAS kernels the run reports (runs before
+        # 2026-11-29 do not).
+        "machine": summary.get("machine"),
     }
     rows = read_contact_csv(os.path.join(directory, "contact.csv"))
     record.update(traction_quantities(rows, dim, exact_normal))

@@ -75,6 +75,7 @@ def write(out, name, code, records, load):
     prefix = "" if code == "dpana" else f"{code}_"
     with open(os.path.join(out, f"{prefix}{name}.json"), "w") as f:
         json.dump({"family": name, "code": code, "loadavg": load,
+                   "processor": processor(),
                    "blas_kernels": kernels_in_use(),
                    "records": records}, f, indent=1)
 
@@ -119,6 +120,26 @@ def kernels_in_use():
     processors, say which kernels they ran."""
     return (os.environ.get("OPENBLAS_CORETYPE") or blas_kernels()
             or openblas_core())
+
+
+def processor():
+    """The processor's model name with its family and model numbers, as
+    the runs' summary.json says it (/proc/cpuinfo; None where it has no
+    model name): the machine a cloud gives differs from day to day, and so
+    do its times."""
+    entries = {}
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                key, _, value = line.partition(":")
+                entries.setdefault(key.strip(), value.strip())
+    except OSError:
+        return None
+    name = entries.get("model name")
+    if name and "cpu family" in entries and "model" in entries:
+        name += " (family %s, model %s)" % (entries["cpu family"],
+                                            entries["model"])
+    return name
 
 
 def load_average():

@@ -4,8 +4,10 @@
 For each size the driver writes the scene (a .prm of prm/scale/ with its mesh
 entries changed), runs `dpana` on it as a user would, and reads the run's
 summary.json: the time and peak resident memory of every phase, the memory
-estimate made before the factorisation, the dofs, the contact unknowns and
-n_Gamma. It writes results.csv (one row a run) and results.md (the table).
+estimate made before the factorisation, the dofs, the contact unknowns,
+n_Gamma, and the machine the run reports (processor, OpenBLAS kernels). It
+writes results.csv (one row a run) and results.md (the table, then the
+machine).
 
     scale.py --dpana build/dpana --prm-dir prm --out DIR [--sizes quick|default|full]
              [--scenes receding,hertz_sphere] [--size M,H ...]
@@ -180,6 +182,11 @@ def run_case(dpana, label, text, out):
         row["t " + p] = s["timings"].get(p, 0.0)
         row["mb " + p] = s["peak_memory_mb"].get(p, 0.0)
     row["peak_mb"] = max(s["peak_memory_mb"].values())
+    # What the times depend on besides the scene (summary.json's machine,
+    # since 2026-11-29): the processor and the BLAS kernels.
+    machine = s.get("machine") or {}
+    row["processor"] = machine.get("processor")
+    row["blas_kernels"] = machine.get("blas_kernels")
     row["total"] = sum(s["timings"].values())
     return row
 
@@ -212,6 +219,10 @@ def write_outputs(rows, out):
             " | %.4g | %.4g | %.0f | %.0f | %s-%s |" % (
                 r["total"], r["cpu"], r["peak_mb"], r["estimate_mb"],
                 r["load_before"], r["load_after"]))
+    machines = sorted({"%s, OpenBLAS %s kernels" % (r["processor"],
+                                                    r["blas_kernels"])
+                       for r in rows if r.get("processor")})
+    lines += [""] + ["Machine: " + m for m in machines]
     open(os.path.join(out, "results.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 

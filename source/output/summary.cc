@@ -142,6 +142,23 @@ namespace dpana
 
 
 
+    nlohmann::json
+    to_json(const Machine &machine, const unsigned int mpi_processes)
+    {
+      nlohmann::json j = {{"processor", machine.processor},
+                          {"cores", machine.cores},
+                          {"blas_kernels", nullptr},
+                          {"blas_threads", nullptr},
+                          {"mpi_processes", mpi_processes}};
+      if (!machine.blas_kernels.empty())
+        j["blas_kernels"] = machine.blas_kernels;
+      if (machine.blas_threads > 0)
+        j["blas_threads"] = machine.blas_threads;
+      return j;
+    }
+
+
+
     void
     write_json(const nlohmann::json &summary, const std::string &filename)
     {

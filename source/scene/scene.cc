@@ -2,6 +2,7 @@
 // dpana: dual condensed frictional contact between linear elastic bodies.
 // ---------------------------------------------------------------------------
 #include <dpana/base/exceptions.h>
+#include <dpana/base/machine.h>
 #include <dpana/base/warnings.h>
 #include <dpana/condensation/contact_problem.h>
 #include <dpana/contact_surface/format_point.h>
@@ -9,6 +10,7 @@
 #include <dpana/output/contact_output.h>
 #include <dpana/output/output_directory.h>
 #include <dpana/output/summary.h>
+#include <dpana/parallel/route.h>
 #include <dpana/parameters/list_syntax.h>
 #include <dpana/scene/input_checks.h>
 #include <dpana/scene/scene.h>
@@ -499,8 +501,10 @@ namespace dpana
     Scene<dim>::write_summary(const std::string &directory) const
     {
       nlohmann::json summary = output::to_json(phase_log);
-      summary["dimension"]   = dim;
-      summary["bodies"]      = nlohmann::json::array();
+      summary["machine"] =
+        output::to_json(this_machine(), parallel::n_world_ranks());
+      summary["dimension"] = dim;
+      summary["bodies"]    = nlohmann::json::array();
       for (const auto &body : bodies)
         summary["bodies"].push_back(output::to_json(*body));
       for (const auto &body : bodies)
@@ -572,6 +576,7 @@ namespace dpana
       else
         print_body_results();
       phase_log.print(std::cout);
+      std::cout << describe(this_machine()) << std::endl;
       if (output)
         std::cout << "Output written to " << output_parameters.directory << "/"
                   << std::endl;

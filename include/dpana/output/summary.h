@@ -4,6 +4,7 @@
 #ifndef dpana_output_summary_h
 #define dpana_output_summary_h
 
+#include <dpana/base/machine.h>
 #include <dpana/base/phase_log.h>
 #include <dpana/body/body.h>
 #include <dpana/scene/contact_summary.h>
@@ -39,6 +40,14 @@ namespace dpana
      */
     nlohmann::json
     to_json(const PhaseLog &phases);
+
+    /**
+     * The machine of the run (base/machine.h) and its number of MPI
+     * processes: `processor`, `cores`, `blas_kernels` and `blas_threads`
+     * (null with a BLAS other than OpenBLAS), `mpi_processes`.
+     */
+    nlohmann::json
+    to_json(const Machine &machine, const unsigned int mpi_processes);
 
     /**
      * Writes @p summary to @p filename, indented.

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "scene_test_tools.h"
 #include "scratch_path.h"
@@ -158,5 +159,18 @@ TEST(Scene, ContactOutputFilesAndSummary)
       EXPECT_TRUE(summary["timings"].contains(phase)) << phase;
       EXPECT_GT(summary["peak_memory_mb"].value(phase, 0.0), 0.0) << phase;
     }
+  // The machine of the run: the test runs on one process, on the OpenBLAS
+  // that scripts/setup.sh installs as the system BLAS.
+  const auto &machine = summary["machine"];
+  EXPECT_GE(machine["cores"].get<int>(), 1);
+  EXPECT_LE(machine["cores"].get<unsigned int>(),
+            std::thread::hardware_concurrency());
+  EXPECT_EQ(machine["mpi_processes"], 1);
+  ASSERT_TRUE(machine["blas_kernels"].is_string());
+  EXPECT_FALSE(machine["blas_kernels"].get<std::string>().empty());
+  EXPECT_GE(machine["blas_threads"].get<int>(), 1);
+#if defined(__x86_64__)
+  EXPECT_FALSE(machine["processor"].get<std::string>().empty());
+#endif
   fs::remove_all(where);
 }

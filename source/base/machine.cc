@@ -1,0 +1,107 @@
+// ---------------------------------------------------------------------------
+// dpana: dual condensed frictional contact between linear elastic bodies.
+// ---------------------------------------------------------------------------
+#include <dpana/base/machine.h>
+
+#include <fstream>
+#include <thread>
+
+#include <dlfcn.h>
+#include <sched.h>
+
+namespace dpana
+{
+  namespace
+  {
+    // The value of the first line of /proc/cpuinfo that starts with
+    // @p key and a colon after blanks; empty if there is none.
+    std::string
+    cpuinfo_entry(const std::string &key)
+    {
+      std::ifstream in("/proc/cpuinfo");
+      std::string   line;
+      while (std::getline(in, line))
+        {
+          if (line.rfind(key, 0) != 0)
+            continue;
+          const auto colon = line.find(':');
+          if (colon == std::string::npos ||
+              line.find_first_not_of(" \t", key.size()) != colon)
+            continue;
+          const auto first = line.find_first_not_of(" \t", colon + 1);
+          return first == std::string::npos ? "" : line.substr(first);
+        }
+      return "";
+    }
+
+
+
+    // The processor's model name, with its family and model numbers where
+    // /proc/cpuinfo gives them (x86): a cloud's generic name ("Intel Xeon
+    // Processor") covers several models. Other processors name their
+    // model otherwise and get an empty string.
+    std::string
+    processor_model()
+    {
+      std::string       name   = cpuinfo_entry("model name");
+      const std::string family = cpuinfo_entry("cpu family");
+      const std::string model  = cpuinfo_entry("model");
+      if (!name.empty() && !family.empty() && !model.empty())
+        name += " (family " + family + ", model " + model + ")";
+      return name;
+    }
+
+
+
+    // The cores the process may run on (its affinity mask), else those of
+    // the machine.
+    unsigned int
+    usable_cores()
+    {
+      cpu_set_t set;
+      if (sched_getaffinity(0, sizeof(set), &set) == 0)
+        return CPU_COUNT(&set);
+      return std::thread::hardware_concurrency();
+    }
+  } // namespace
+
+
+
+  Machine
+  this_machine()
+  {
+    Machine m;
+    m.processor = processor_model();
+    m.cores     = usable_cores();
+    // OpenBLAS' calls in the BLAS this process has loaded, looked up at run
+    // time as in linear_algebra/blas_threads.cc.
+    using CoreName   = char *(*)();
+    using GetThreads = int (*)();
+    const auto corename =
+      reinterpret_cast<CoreName>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
+    const auto threads = reinterpret_cast<GetThreads>(
+      dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+    if (corename != nullptr && corename() != nullptr)
+      m.blas_kernels = corename();
+    if (threads != nullptr)
+      m.blas_threads = threads();
+    return m;
+  }
+
+
+
+  std::string
+  describe(const Machine &machine)
+  {
+    std::string line =
+      "Machine: " +
+      (machine.processor.empty() ? std::string("processor not known") :
+                                   machine.processor) +
+      ", " + std::to_string(machine.cores) + " cores; ";
+    if (machine.blas_kernels.empty())
+      return line + "a BLAS other than OpenBLAS";
+    return line + "OpenBLAS " + machine.blas_kernels + " kernels on " +
+           std::to_string(machine.blas_threads) +
+           (machine.blas_threads == 1 ? " thread" : " threads");
+  }
+} // namespace dpana
