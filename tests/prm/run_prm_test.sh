@@ -15,7 +15,8 @@
 #   match the file of the same relative path under WORKDIR, compared with
 #   numdiff at relative tolerance 1e-6 and absolute tolerance 1e-9 (numbers
 #   are split at whitespace and at the JSON punctuation , [ ] { } : "); a
-#   JSON file is compared without its "timings" and "peak_memory_mb".
+#   JSON file is compared without its "timings", "peak_memory_mb" and
+#   "machine".
 #
 # See tests/prm/README.md.
 set -u
@@ -79,15 +80,16 @@ if [ ! -d "$srcdir/$name.expected" ]; then
   echo "FAIL: neither $name.error nor $name.expected/ exists"
   exit 1
 fi
-# A JSON file is compared without its "timings", "peak_memory_mb" and
-# "memory_estimate_mb" (which holds the resident memory of the run), which
-# change from run to run: both sides are rewritten without them, with sorted
-# keys, one value per line.
+# A JSON file is compared without its "timings", "peak_memory_mb",
+# "memory_estimate_mb" (which holds the resident memory of the run) and
+# "machine" (the processor and BLAS kernels of the run), which change from
+# run to run and machine to machine: both sides are rewritten without them,
+# with sorted keys, one value per line.
 without_timings() {
   python3 -c '
 import json, sys
 d = json.load(open(sys.argv[1]))
-for k in ("timings", "peak_memory_mb", "memory_estimate_mb"):
+for k in ("timings", "peak_memory_mb", "memory_estimate_mb", "machine"):
     d.pop(k, None)
 print(json.dumps(d, indent=1, sort_keys=True))' "$1" > "$2"
 }
