@@ -81,8 +81,8 @@ namespace dpana
       reinterpret_cast<CoreName>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
     const auto threads = reinterpret_cast<GetThreads>(
       dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    if (corename != nullptr && corename() != nullptr)
-      m.blas_kernels = corename();
+    if (const char *name = corename == nullptr ? nullptr : corename())
+      m.blas_kernels = name;
     if (threads != nullptr)
       m.blas_threads = threads();
     return m;
@@ -97,7 +97,8 @@ namespace dpana
       "Machine: " +
       (machine.processor.empty() ? std::string("processor not known") :
                                    machine.processor) +
-      ", " + std::to_string(machine.cores) + " cores; ";
+      ", " + std::to_string(machine.cores) +
+      (machine.cores == 1 ? " core; " : " cores; ");
     if (machine.blas_kernels.empty())
       return line + "a BLAS other than OpenBLAS";
     return line + "OpenBLAS " + machine.blas_kernels + " kernels on " +

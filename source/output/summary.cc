@@ -145,11 +145,13 @@ namespace dpana
     nlohmann::json
     to_json(const Machine &machine, const unsigned int mpi_processes)
     {
-      nlohmann::json j = {{"processor", machine.processor},
+      nlohmann::json j = {{"processor", nullptr},
                           {"cores", machine.cores},
                           {"blas_kernels", nullptr},
                           {"blas_threads", nullptr},
                           {"mpi_processes", mpi_processes}};
+      if (!machine.processor.empty())
+        j["processor"] = machine.processor;
       if (!machine.blas_kernels.empty())
         j["blas_kernels"] = machine.blas_kernels;
       if (machine.blas_threads > 0)

@@ -22,7 +22,8 @@ namespace dpana
    */
   struct Machine
   {
-    /// The processor's model name (/proc/cpuinfo); empty where not known.
+    /// The processor's model name, on x86 with its family and model numbers
+    /// (/proc/cpuinfo); empty where not known.
     std::string processor;
     /// The logical cores the process may run on.
     unsigned int cores = 0;

@@ -43,8 +43,9 @@ namespace dpana
 
     /**
      * The machine of the run (base/machine.h) and its number of MPI
-     * processes: `processor`, `cores`, `blas_kernels` and `blas_threads`
-     * (null with a BLAS other than OpenBLAS), `mpi_processes`.
+     * processes: `processor` (null where not known), `cores`,
+     * `blas_kernels` and `blas_threads` (null with a BLAS other than
+     * OpenBLAS), `mpi_processes`.
      */
     nlohmann::json
     to_json(const Machine &machine, const unsigned int mpi_processes);
