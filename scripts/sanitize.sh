@@ -11,10 +11,16 @@ set -eu
 cd "$(dirname "$0")/.."
 build=${1:-build-sanitize}
 start=$(date +%s)
+# The packages of ./run.sh and ./test.sh (only those missing).
+DPANA_PACKAGES_ONLY=1 scripts/setup.sh
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined"
 flags="$flags -fno-sanitize-recover=undefined"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+# ccache, where it is installed, keeps the objects of an earlier build.
+launcher=()
+if command -v ccache > /dev/null 2>&1; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" \
   -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DDPANA_FUZZ_TIMEOUT=5400 > /dev/null

@@ -4,7 +4,8 @@
 # Release build in build/ and builds it with two jobs.
 #
 # Environment: DPANA_BUILD_DIR (default build), DPANA_BUILD_TYPE (default
-# Release), DPANA_JOBS (default 2).
+# Release), DPANA_JOBS (default 2); DPANA_PACKAGES_ONLY=1 installs the
+# packages and stops (scripts/sanitize.sh, which builds elsewhere).
 set -euo pipefail
 
 top="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -52,6 +53,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get update
   "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive \
     apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+if [ "${DPANA_PACKAGES_ONLY:-0}" = 1 ]; then
+  exit 0
 fi
 
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
