@@ -106,9 +106,7 @@ def blas_kernels():
     core = openblas_core()
     if core is None or core.lower() != "prescott":
         return None
-    with open("/proc/cpuinfo") as f:
-        flags = next((line.split(":", 1)[1].split() for line in f
-                      if line.startswith("flags")), [])
+    flags = cpuinfo().get("flags", "").split()
     return "Haswell" if {"avx2", "fma"} <= set(flags) else None
 
 
@@ -122,19 +120,28 @@ def kernels_in_use():
             or openblas_core())
 
 
+@functools.lru_cache(maxsize=None)
+def cpuinfo():
+    """The entries of /proc/cpuinfo, each with the value of its first line
+    (that of the first processor); empty where the file is not there."""
+    entries = {}
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                key, colon, value = line.partition(":")
+                if colon:
+                    entries.setdefault(key.strip(), value.strip())
+    except OSError:
+        pass
+    return entries
+
+
 def processor():
     """The processor's model name with its family and model numbers, as
     the runs' summary.json says it (/proc/cpuinfo; None where it has no
     model name): the machine a cloud gives differs from day to day, and so
     do its times."""
-    entries = {}
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                key, _, value = line.partition(":")
-                entries.setdefault(key.strip(), value.strip())
-    except OSError:
-        return None
+    entries = cpuinfo()
     name = entries.get("model name")
     if name and "cpu family" in entries and "model" in entries:
         name += " (family %s, model %s)" % (entries["cpu family"],

@@ -4,6 +4,7 @@
 #include <dpana/base/machine.h>
 
 #include <fstream>
+#include <map>
 #include <thread>
 
 #include <dlfcn.h>
@@ -13,25 +14,27 @@ namespace dpana
 {
   namespace
   {
-    // The value of the first line of /proc/cpuinfo that starts with
-    // @p key and a colon after blanks; empty if there is none.
-    std::string
-    cpuinfo_entry(const std::string &key)
+    // The entries of /proc/cpuinfo, each with the value of its first line
+    // (that of the first processor); empty where the file is not there.
+    std::map<std::string, std::string>
+    cpuinfo()
     {
-      std::ifstream in("/proc/cpuinfo");
-      std::string   line;
+      std::map<std::string, std::string> entries;
+      std::ifstream                      in("/proc/cpuinfo");
+      std::string                        line;
       while (std::getline(in, line))
         {
-          if (line.rfind(key, 0) != 0)
-            continue;
           const auto colon = line.find(':');
-          if (colon == std::string::npos ||
-              line.find_first_not_of(" \t", key.size()) != colon)
+          if (colon == std::string::npos || colon == 0)
             continue;
-          const auto first = line.find_first_not_of(" \t", colon + 1);
-          return first == std::string::npos ? "" : line.substr(first);
+          const auto key_end = line.find_last_not_of(" \t", colon - 1);
+          const auto first   = line.find_first_not_of(" \t", colon + 1);
+          if (key_end == std::string::npos)
+            continue;
+          entries.emplace(line.substr(0, key_end + 1),
+                          first == std::string::npos ? "" : line.substr(first));
         }
-      return "";
+      return entries;
     }
 
 
@@ -39,15 +42,19 @@ namespace dpana
     // The processor's model name, with its family and model numbers where
     // /proc/cpuinfo gives them (x86): a cloud's generic name ("Intel Xeon
     // Processor") covers several models. Other processors name their
-    // model otherwise and get an empty string.
-    std::string
+    // model otherwise and get an empty string. Read once per process.
+    const std::string &
     processor_model()
     {
-      std::string       name   = cpuinfo_entry("model name");
-      const std::string family = cpuinfo_entry("cpu family");
-      const std::string model  = cpuinfo_entry("model");
-      if (!name.empty() && !family.empty() && !model.empty())
-        name += " (family " + family + ", model " + model + ")";
+      static const std::string name = [] {
+        auto        entries = cpuinfo();
+        std::string model   = entries["model name"];
+        if (!model.empty() && !entries["cpu family"].empty() &&
+            !entries["model"].empty())
+          model += " (family " + entries["cpu family"] + ", model " +
+                   entries["model"] + ")";
+        return model;
+      }();
       return name;
     }
 
