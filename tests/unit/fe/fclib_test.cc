@@ -26,21 +26,14 @@ namespace
   using dpana::contact::ConeModel;
   using dpana::contact::ContactProblem;
 
-  // A scratch file name in the working directory of the test, removed at
-  // the end of the test.
-  class ScratchFile
+  // A scratch file for one test: its HDF5 file, removed at the end of the
+  // test.
+  struct ScratchFile : dpana::test::ScratchFile
   {
-  public:
     explicit ScratchFile(const std::string &name)
-      : path(dpana::test::scratch_path("fclib_test_" + name + ".hdf5").string())
+      : dpana::test::ScratchFile("fclib_test_" + name + ".hdf5")
     {
-      std::filesystem::remove(path);
     }
-    ~ScratchFile()
-    {
-      std::filesystem::remove(path);
-    }
-    const std::string path;
   };
 
   // A random symmetric positive definite problem, with a few exact zeros in

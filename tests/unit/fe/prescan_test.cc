@@ -15,8 +15,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <list>
 #include <string>
-#include <vector>
 
 #include "scratch_path.h"
 #include <gtest/gtest.h>
@@ -26,26 +26,16 @@ using namespace dpana;
 namespace
 {
   // The files write_file() made, removed when the test program ends.
-  struct ScratchFiles
-  {
-    std::vector<std::string> names;
-    ~ScratchFiles()
-    {
-      for (const auto &name : names)
-        std::filesystem::remove(name);
-    }
-  } scratch_files;
+  std::list<dpana::test::ScratchFile> scratch_files;
 
   // Writes @p text to a file of the temporary directory and returns its
   // name.
   std::string
   write_file(const std::string &name, const std::string &text)
   {
-    const std::string file =
-      dpana::test::scratch_path("prescan_" + name).string();
-    std::ofstream(file) << text;
-    scratch_files.names.push_back(file);
-    return file;
+    const auto &file = scratch_files.emplace_back("prescan_" + name);
+    std::ofstream(file.path) << text;
+    return file.path;
   }
 } // namespace
 
