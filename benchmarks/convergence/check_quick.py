@@ -7,7 +7,12 @@
    ratios of analyse.py on two such sequences whose limits lie 1 % apart
    (the same relative errors, ten times the time): against the common
    value every tolerance is "not resolved", each against its own limit
-   the ratio is 0.1, and a tolerance the finest level misses gives none.
+   the ratio is 0.1, and a tolerance neither finest level reaches gives
+   "not reached"; the bounds of equal_error.py on sequences with an exact
+   value (q = 1 + C h^2, h = 1 ... 1/8, times 10 4^k and 100 4^k, the
+   ratios worked out by hand below): a code within a tolerance on its
+   coarsest level, or one that never reaches it, bounds the ratio from
+   the right side, and the tally counts the bounds that decide the goal.
 2. Three coarse levels of the hertz_rigid_mu0_d_shaped family (the
    D-shaped body of prm/hertz_rigid_mu0_d_shaped.prm, 5 contact
    refinements and 0, 1, 2 global
@@ -56,6 +61,7 @@ import sys
 import tempfile
 
 import analyse
+import equal_error
 import families
 import records
 import richardson
@@ -91,11 +97,68 @@ def check_equal_error(fail):
     if set(common.values()) != {"not resolved"}:
         fail(f"equal error: limits 1 % apart resolved at {common}")
     own = analyse.own_limit_ratios(sd, sg)
-    expected = {0.01: 0.1, 0.005: 0.1, 0.002: 0.1, 0.001: None}
-    if any((own[t] is None) != (v is None) or
-           (v is not None and abs(own[t] - v) > 1e-9)
+    expected = {0.01: 0.1, 0.005: 0.1, 0.002: 0.1, 0.001: "not reached"}
+    if any(isinstance(own[t], str) != isinstance(v, str) or
+           (own[t] != v if isinstance(v, str) else abs(own[t] - v) > 1e-9)
            for t, v in expected.items()):
         fail(f"equal error: own-limit ratios {own}, expected {expected}")
+
+
+def same_ratio(got, expected):
+    """equal_error's cells: the same kind, and values equal to 1e-9."""
+    def close(a, b):
+        return abs(a / b - 1) < 1e-9
+    if expected is None or isinstance(expected, str):
+        return got == expected
+    if isinstance(expected, equal_error.Bound):
+        return isinstance(got, equal_error.Bound) and \
+            got.relation == expected.relation and \
+            close(got.value, expected.value)
+    return isinstance(got, float) and close(got, expected)
+
+
+def check_bounds(fail):
+    """Errors 0.003 h^2 (times 10 4^k) against 0.08 h^2 (times 100 4^k),
+    h = 1, 1/2, 1/4, 1/8, both against the exact value 1. At 1 % the first
+    is within on its coarsest level (time at most 10), the second from
+    between levels 1 and 2 (errors 0.02 and 0.005, times 400 and 1600: 800
+    in log-log): ratio at most 10/800. At 0.2 % the first takes 15
+    (between 0.003 and 0.00075: 10 4^(ln(2/3) / ln(1/4))), the second 4000
+    (between 0.005 and 0.00125: 1600 4^(ln 0.4 / ln 0.25)): 0.00375. At
+    0.1 % the first takes 30 (10 4^(ln 3 / ln 4)), the second never (its
+    finest level, at 6400, errs by 0.00125): ratio at most 30/6400.
+    Swapped, the same bounds turn into lower ones; both within on their
+    coarsest levels decide nothing."""
+    h = [1.0, 0.5, 0.25, 0.125]
+
+    def levels(c, t0):
+        return [{"h": x, "dofs": 1, "solve_time": t0 * 4 ** k,
+                 "q": 1.0 + c * x ** 2} for k, x in enumerate(h)]
+
+    fast, slow = (analyse.study({"ok": levels(c, t0)}, "q", 1.0)
+                  for c, t0 in ((0.003, 10.0), (0.08, 100.0)))
+    Bound = equal_error.Bound
+    cases = [
+        ((fast, slow), {0.01: Bound("≤", 10 / 800), 0.002: 15 / 4000,
+                        0.001: Bound("≤", 30 / 6400)}),
+        ((slow, fast), {0.01: Bound("≥", 80.0), 0.002: 4000 / 15,
+                        0.001: Bound("≥", 6400 / 30)}),
+        ((fast, fast), {0.01: None})]
+    for (sd, sg), expected in cases:
+        got = equal_error.equal_error_ratios(sd, sg)
+        for tol, v in expected.items():
+            if not same_ratio(got[tol], v):
+                fail(f"equal error bounds at {tol}: got {got[tol]}, "
+                     f"expected {v}")
+    t = equal_error.tally(
+        [("q", r) for r in equal_error.equal_error_ratios(fast, slow).values()]
+        + [("q", r) for r in equal_error.equal_error_ratios(slow, fast)
+           .values()])["all"]
+    # fast/slow: <= 0.0125, <= 0.00625 (0.5 %: 10/1600), 0.00375, <= 0.0047;
+    # slow/fast: >= 80, >= 160, 267, >= 213.
+    if (t["cells"], t["met"], t["bounds met"], t["bounds missed"]) != \
+            (2, 1, 3, 3):
+        fail(f"equal error tally: {t}")
 
 
 def check_a_m(dpana, prm_dir, family, levels, load, a_ref, bound, label,
@@ -173,6 +236,7 @@ def main():
 
     check_richardson(fail)
     check_equal_error(fail)
+    check_bounds(fail)
     runs = check_hertz(args.dpana, args.prm_dir, fail)
     if runs is not None:
         check_results_file(runs, fail)

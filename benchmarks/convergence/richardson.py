@@ -69,6 +69,13 @@ def extrapolate(h, q):
             "asymptotic": asymptotic, "note": note}
 
 
+def relative_errors(values, reference):
+    """|v - reference| / |reference|; a quantity whose exact value is 0 is
+    itself a relative error."""
+    return [abs(v - reference) / abs(reference) if reference else abs(v)
+            for v in values]
+
+
 def time_to_tolerance(times, errors, tol):
     """Time at which the error falls below tol for good: the first level
     from which every finer level stays below tol, interpolated in log-log
