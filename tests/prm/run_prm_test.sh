@@ -85,7 +85,7 @@ fi
 # "machine" (the processor and BLAS kernels of the run), which change from
 # run to run and machine to machine: both sides are rewritten without them,
 # with sorted keys, one value per line.
-without_timings() {
+without_run_facts() {
   python3 -c '
 import json, sys
 d = json.load(open(sys.argv[1]))
@@ -106,8 +106,8 @@ while IFS= read -r -d '' reference; do
   written_file=$relative
   if [ "${relative##*.}" = json ]; then
     expected_file=$(mktemp) written_file=$(mktemp)
-    without_timings "$reference" "$expected_file"
-    without_timings "$relative" "$written_file"
+    without_run_facts "$reference" "$expected_file"
+    without_run_facts "$relative" "$written_file"
   fi
   if numdiff -q -r 1e-6 -a 1e-9 -s ' \t\n,[]{}:"' "$expected_file" \
       "$written_file" > /dev/null; then
