@@ -103,17 +103,17 @@ class DiscMesh(SphereMesh):
     script, stem = "make_disc.py", "disc"
 
 
-def graded_pair(disc, other):
+def graded_pair(disc, other, first=0):
     """Both bodies of a 2D Hertz pair on graded gmsh meshes (make_disc.py),
     the disc with the options disc, the other body with other: levels
-    g = 0 ... 4 and the --full level 5, h = 2^(-g). Returns (levels,
+    g = first ... 4 and the --full level 5, h = 2^(-g). Returns (levels,
     full)."""
     def level(g):
         return (2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file":
                             DiscMesh(g, *disc),
                             "Body 2/Geometry/Gmsh/Mesh file":
                             DiscMesh(g, *other)})
-    return [level(g) for g in range(0, 5)], [level(5)]
+    return [level(g) for g in range(first, 5)], [level(5)]
 
 
 # How a family's note names its friction.
@@ -275,7 +275,9 @@ FAMILIES.append(Family(
 # meshed as GetFEM's.
 BLOCK17 = ("--body", "block") + RHO17
 # The same meshes for the rigid punch (E1/E2 = 1e3) and the stiff
-# foundation (E1/E2 = 1e-3), frictionless and with mu = 1.
+# foundation (E1/E2 = 1e-3), frictionless and with mu = 1. They start one
+# level coarser (g = -1), as GetFEM's sweeps paired with them: on level 0
+# both codes are often within 1 % already, and then neither time is known.
 for ratio, mu, what in (
         (r, m, w) for r, w in (("1", "an elastic block"),
                                ("1e3", "a soft block"),
@@ -284,7 +286,7 @@ for ratio, mu, what in (
     FAMILIES.append(Family(
         f"hertz_ratio_{ratio}_{mu}_graded_block",
         f"hertz_ratio_{ratio}_{mu}_graded_block.prm", 2,
-        *graded_pair(RHO17, BLOCK17),
+        *graded_pair(RHO17, BLOCK17, first=-1),
         quantities=HERTZ_Q, plot=("N_max", "a_m"),
         exact={"resultant": 100000.0}, hertz=True,
         note=f"Circular body on {what}, both on graded gmsh meshes"
