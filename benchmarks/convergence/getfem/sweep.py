@@ -144,11 +144,12 @@ for ratio in ("1", "1e-3", "1e3"):
 for name in ("hertz_ratio_1_mu1", "hertz_ratio_1e3_mu1", "hertz_ratio_1e-3_mu0",
              "hertz_ratio_1e-3_mu1"):
     FAMILIES[name + "_graded_block"] = FAMILIES[name]
-# The six pairs on dpana's graded disc and block start one level coarser
-# (level -1, as dpana's: families.py), where both codes are often within
-# 1 % on level 0 already.
-for name in (f"hertz_ratio_{r}_{mu}_graded_block" for r in ("1", "1e3", "1e-3")
-             for mu in ("mu0", "mu1")):
+# The disc on the elastic block, paired with dpana's level meshes and with
+# its graded disc and block, starts one level coarser (level -1, as
+# dpana's: families.py), where both codes are often within 1 % on level 0
+# already.
+for name in (f"hertz_ratio_{r}_{mu}{graded}" for r in ("1", "1e3", "1e-3")
+             for mu in ("mu0", "mu1") for graded in ("", "_graded_block")):
     script, levels, extra = FAMILIES[name]
     FAMILIES[name] = (script, range(-1, levels.stop), extra)
 FAMILIES["hertz_cavity_mu1_graded"] = FAMILIES["hertz_cavity_mu1"]
