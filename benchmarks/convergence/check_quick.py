@@ -98,9 +98,7 @@ def check_equal_error(fail):
         fail(f"equal error: limits 1 % apart resolved at {common}")
     own = analyse.own_limit_ratios(sd, sg)
     expected = {0.01: 0.1, 0.005: 0.1, 0.002: 0.1, 0.001: "not reached"}
-    if any(isinstance(own[t], str) != isinstance(v, str) or
-           (own[t] != v if isinstance(v, str) else abs(own[t] - v) > 1e-9)
-           for t, v in expected.items()):
+    if any(not same_ratio(own[t], v) for t, v in expected.items()):
         fail(f"equal error: own-limit ratios {own}, expected {expected}")
 
 

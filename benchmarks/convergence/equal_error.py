@@ -142,12 +142,9 @@ def tally(cells):
                 t["ratios"].append(ratio)
             elif isinstance(ratio, str):
                 t[ratio] += 1
-            elif verdict(ratio) == "met":
-                t["bounds met"] += 1
-            elif verdict(ratio) == "missed":
-                t["bounds missed"] += 1
             else:
-                t["undecided"] += 1
+                t[{"met": "bounds met", "missed": "bounds missed",
+                   None: "undecided"}[verdict(ratio)]] += 1
     out.move_to_end("all")
     for t in out.values():
         r = t.pop("ratios")
