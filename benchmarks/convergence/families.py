@@ -269,11 +269,17 @@ for ratio in ("1", "1e-3", "1e3"):
 # 28.125 deg, beyond the candidate surface's 16 mm); the foundation's grid
 # is the scene's.
 RHO17 = ("--set", "Rho=17", "--set", "Arc=28.125")
+# Its first level g = -1 pairs the disc's level -1 with the foundation of
+# COARSER_PAIR, as GetFEM's level -1.
+COARSER_BLOCK = {k: v for k, v in COARSER_PAIR[1].items()
+                 if k.startswith("Body 2/")}
 FAMILIES.append(Family(
     "hertz_ratio_1_mu0_graded", "hertz_ratio_1_mu0_graded.prm", 2,
-    [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
-                  "Body 2/Geometry/Global refinements": str(g)})
-     for g in range(0, 5)],
+    [(2.0, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(-1, *RHO17),
+            **COARSER_BLOCK})]
+    + [(2.0 ** -g, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(g, *RHO17),
+                    "Body 2/Geometry/Global refinements": str(g)})
+       for g in range(0, 5)],
     [(2.0 ** -5, {"Body 1/Geometry/Gmsh/Mesh file": DiscMesh(5, *RHO17),
                   "Body 2/Geometry/Global refinements": "5"})],
     quantities=HERTZ_Q, plot=("N_max", "a_m"),
@@ -327,9 +333,12 @@ for mu in ("mu0", "mu1"):
 # sphere's P/4 = 75 kN exactly.
 SPHERE_Q = {"quantities": ("N_max", "a_m", "resultant"),
             "plot": ("N_max", "a_m"), "exact": {"resultant": 75000.0}}
+# The level families start at level -2, as GetFEM's sweeps paired with them:
+# on level 0, and for the one sphere on level -1, both codes are within 1 %
+# in a_m already, and then neither time to 1 % is known.
 FAMILIES.append(Family(
     "hertz_sphere_rigid", "hertz_sphere_rigid.prm", 3,
-    sphere(range(0, 5)), sphere([5]),
+    sphere(range(-2, 5)), sphere([5]),
     **SPHERE_Q,
     note="Quarter sphere R = 40 on a rigid plane, P = 300 kN (3D Hertz: "
          "a = 4.050 mm, p0 = 8730 MPa)"))
@@ -368,7 +377,7 @@ for name, mu in (("hertz_two_spheres", "frictionless"),
                  ("hertz_two_spheres_mu03", "mu = 0.3")):
     FAMILIES.append(Family(
         name, f"{name}.prm", 3,
-        sphere(range(0, 5), (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
+        sphere(range(-2, 5), (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
         sphere([5], (("Body 1", ()), ("Body 2", LOWER_SPHERE))),
         **SPHERE_Q,
         note=f"Two equal spheres R = 40, P = 300 kN, {mu} (3D Hertz as "
