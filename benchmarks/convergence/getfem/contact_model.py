@@ -12,6 +12,7 @@ force eps |Omega| |u_y|, some 1e-10 of the load here.
 
 import contextlib
 import json
+import resource
 import sys
 import time
 
@@ -297,9 +298,14 @@ def meshing():
 
 def emit(record, start):
     """Adds the time since start without the mesh time (the GetFEM work:
-    assembly, solve and post-processing) and the mesh time, and prints the
-    record as one JSON line."""
+    assembly, solve and post-processing), the mesh time and the peak
+    memory, and prints the record as one JSON line. The peak memory is the
+    process's peak resident set (getrusage's ru_maxrss, KiB on Linux) in MB
+    of 2^20 bytes, the measure of dpana's summary.json: for both codes with
+    the interpreter or the libraries loaded."""
     record["mesh_time"] = _MESH_TIME[0]
     record["solve_time"] = time.perf_counter() - start - _MESH_TIME[0]
+    record["peak_memory_mb"] = \
+        resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     json.dump(record, sys.stdout)
     print()
