@@ -70,6 +70,16 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 import records as records_io  # noqa: E402  (benchmarks/convergence/)
+
+
+def circle_on_block(ratio, *options):
+    """The circular body on the elastic block, E1/E2 = ratio, from level -1
+    as dpana's level meshes and its graded disc and block (families.py): on
+    level 0 both codes are often within 1 % already."""
+    return (["hertz.py", "--body", "circle", "--ratio", ratio, *options],
+            range(-1, 4), [4])
+
+
 # family: (script arguments, default levels, extra levels of --full).
 # The default levels stop where a GetFEM level takes about a minute on the
 # loaded 2-core machine (the two-body brick between non-matching meshes
@@ -94,25 +104,15 @@ FAMILIES = {
                             [5]),
     "two_body_ratio_1e3": (["two_body.py", "--ratio", "1e3"], range(0, 5),
                            [5]),
-    # The disc on the elastic block from level -1, as dpana's level meshes
-    # and its graded disc and block (families.py): on level 0 both codes
-    # are often within 1 % already.
-    "hertz_ratio_1_mu0": (["hertz.py", "--body", "circle", "--ratio", "1"],
-                          range(-1, 4), [4]),
+    "hertz_ratio_1_mu0": circle_on_block("1"),
     # The same GetFEM sweep, paired with dpana's graded disc.
-    "hertz_ratio_1_mu0_graded": (["hertz.py", "--body", "circle", "--ratio",
-                                  "1"], range(-1, 4), [4]),
+    "hertz_ratio_1_mu0_graded": circle_on_block("1"),
     # ... and with dpana's graded disc and graded foundation.
-    "hertz_ratio_1_mu0_graded_block": (["hertz.py", "--body", "circle",
-                                        "--ratio", "1"], range(-1, 4), [4]),
-    "hertz_ratio_1e-3_mu0": (["hertz.py", "--body", "circle", "--ratio",
-                              "1e-3"], range(-1, 4), [4]),
-    "hertz_ratio_1e3_mu0": (["hertz.py", "--body", "circle", "--ratio",
-                             "1e3"], range(-1, 4), [4]),
+    "hertz_ratio_1_mu0_graded_block": circle_on_block("1"),
+    "hertz_ratio_1e-3_mu0": circle_on_block("1e-3"),
+    "hertz_ratio_1e3_mu0": circle_on_block("1e3"),
     # The same GetFEM sweep, paired with dpana's graded disc and block.
-    "hertz_ratio_1e3_mu0_graded_block": (["hertz.py", "--body", "circle",
-                                          "--ratio", "1e3"], range(-1, 4),
-                                         [4]),
+    "hertz_ratio_1e3_mu0_graded_block": circle_on_block("1e3"),
     "hertz_rigid_mu1": (["hertz.py", "--body", "circle", "--mu", "1"],
                         range(-2, 5), [5]),
     "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
@@ -139,9 +139,7 @@ FAMILIES = {
                                range(-2, 3), [3]),
 }
 for ratio in ("1", "1e-3", "1e3"):
-    FAMILIES[f"hertz_ratio_{ratio}_mu1"] = (
-        ["hertz.py", "--body", "circle", "--ratio", ratio, "--mu", "1"],
-        range(-1, 4), [4])
+    FAMILIES[f"hertz_ratio_{ratio}_mu1"] = circle_on_block(ratio, "--mu", "1")
 # The same GetFEM sweeps, paired with dpana's graded disc and foundation
 # (or cavity): the frictional pairs and the stiff foundation.
 for name in ("hertz_ratio_1_mu1", "hertz_ratio_1e3_mu1", "hertz_ratio_1e-3_mu0",
