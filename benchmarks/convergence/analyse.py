@@ -28,10 +28,6 @@ from equal_error import common_reference, equal_error_ratios, \
     own_limit_ratios
 from richardson import relative_errors
 
-# The times to reach a relative error (equal_error.TOLERANCES): the tables
-# give 1 % and 0.1 %, the equal-error ratios all four.
-TOLERANCES = equal_error.TOLERANCES
-
 
 def load(directory):
     runs = {}
@@ -62,9 +58,11 @@ def study(run, quantity, exact):
     floor = 0.0
     if exact is None and extra["order"] is None and len(q) >= 2 and q[-1]:
         floor = abs(q[-1] - q[-2]) / abs(q[-1])
+    # The times to reach each relative error of equal_error.TOLERANCES: the
+    # tables give 1 % and 0.1 %, the equal-error ratios all four.
     reach = {tol: (richardson.time_to_tolerance(times, errors, tol)
                    if tol >= floor else "unresolved")
-             for tol in TOLERANCES}
+             for tol in equal_error.TOLERANCES}
     return {"quantity": quantity, "values": q, "errors": errors,
             "times": times, "dofs": [r["dofs"] for r in records],
             "extrapolated": extra, "exact": exact, "reference": reference,

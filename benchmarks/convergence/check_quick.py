@@ -154,7 +154,7 @@ def check_bounds(fail):
            .values()])["all"]
     # fast/slow: <= 0.0125, <= 0.00625 (0.5 %: 10/1600), 0.00375, <= 0.0047;
     # slow/fast: >= 80, >= 160, 267, >= 213.
-    if (t["cells"], t["met"], t["bounds met"], t["bounds missed"]) != \
+    if (t["ratios"], t["met"], t["bounds met"], t["bounds missed"]) != \
             (2, 1, 3, 3):
         fail(f"equal error tally: {t}")
 

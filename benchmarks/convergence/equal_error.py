@@ -127,11 +127,11 @@ def verdict(ratio):
 
 
 def tally(cells):
-    """Per quantity (and "all") from (quantity, ratio) pairs: the ratios,
-    how many meet GOAL, their geometric mean, the bounds that meet or miss
-    it, the cells that decide nothing (a bound on the wrong side of GOAL,
-    or both codes on their coarsest levels), and those not reached or not
-    resolved."""
+    """Per quantity (and "all") from (quantity, ratio) pairs: the number of
+    ratios ("ratios"), how many of them meet GOAL, their geometric mean,
+    the bounds that meet or miss it, the cells that decide nothing (a bound
+    on the wrong side of GOAL, or both codes on their coarsest levels), and
+    those not reached or not resolved."""
     out = collections.OrderedDict()
     for quantity, ratio in cells:
         for key in (quantity, "all"):
@@ -148,7 +148,7 @@ def tally(cells):
     out.move_to_end("all")
     for t in out.values():
         r = t.pop("ratios")
-        t["cells"] = len(r)
+        t["ratios"] = len(r)
         t["met"] = sum(v <= GOAL for v in r)
         t["geometric mean"] = math.exp(sum(map(math.log, r)) / len(r)) \
             if r else None
@@ -164,7 +164,7 @@ def tally_table(cells):
     for q, t in tally(cells).items():
         g = "—" if t["geometric mean"] is None else \
             f"{t['geometric mean']:.3f}"
-        md.append(f"| {q} | {t['cells']} | {t['met']} | {g} | "
+        md.append(f"| {q} | {t['ratios']} | {t['met']} | {g} | "
                   f"{t['bounds met']} | {t['bounds missed']} | "
                   f"{t['undecided']} | {t['not reached']} | "
                   f"{t['not resolved']} |")
