@@ -87,14 +87,6 @@ def circle_on_block(ratio, *options):
 FAMILIES = {
     "hertz_rigid_mu0": (["hertz.py", "--body", "circle"], range(-2, 5),
                         [5]),
-    # The same GetFEM sweep, paired with dpana's leaner disc mesh.
-    "hertz_rigid_mu0_r10": (["hertz.py", "--body", "circle"], range(-2, 5),
-                            [5]),
-    # The same GetFEM sweeps, paired with dpana's graded disc.
-    "hertz_rigid_mu0_graded": (["hertz.py", "--body", "circle"],
-                               range(-2, 5), [5]),
-    "hertz_rigid_mu1_graded": (["hertz.py", "--body", "circle", "--mu", "1"],
-                               range(-2, 5), [5]),
     "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
                                  range(-2, 5), [5]),
     "receding_2d_mu0": (["receding.py"], range(0, 6), [6, 7]),
@@ -105,21 +97,12 @@ FAMILIES = {
     "two_body_ratio_1e3": (["two_body.py", "--ratio", "1e3"], range(0, 5),
                            [5]),
     "hertz_ratio_1_mu0": circle_on_block("1"),
-    # The same GetFEM sweep, paired with dpana's graded disc.
-    "hertz_ratio_1_mu0_graded": circle_on_block("1"),
-    # ... and with dpana's graded disc and graded foundation.
-    "hertz_ratio_1_mu0_graded_block": circle_on_block("1"),
     "hertz_ratio_1e-3_mu0": circle_on_block("1e-3"),
     "hertz_ratio_1e3_mu0": circle_on_block("1e3"),
-    # The same GetFEM sweep, paired with dpana's graded disc and block.
-    "hertz_ratio_1e3_mu0_graded_block": circle_on_block("1e3"),
     "hertz_rigid_mu1": (["hertz.py", "--body", "circle", "--mu", "1"],
                         range(-2, 5), [5]),
     "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
                          range(0, 4), [4]),
-    # The same GetFEM sweep, paired with dpana's graded disc and cavity.
-    "hertz_cavity_mu0_graded": (["hertz.py", "--body", "circle", "--cavity"],
-                                range(0, 4), [4]),
     "hertz_cavity_mu1": (["hertz.py", "--body", "circle", "--cavity", "--mu",
                           "1"], range(0, 4), [4]),
     "receding_3d_L80": (["receding_3d.py"], range(0, 5), [5]),
@@ -140,12 +123,21 @@ FAMILIES = {
 }
 for ratio in ("1", "1e-3", "1e3"):
     FAMILIES[f"hertz_ratio_{ratio}_mu1"] = circle_on_block(ratio, "--mu", "1")
-# The same GetFEM sweeps, paired with dpana's graded disc and foundation
-# (or cavity): the frictional pairs and the stiff foundation.
-for name in ("hertz_ratio_1_mu1", "hertz_ratio_1e3_mu1", "hertz_ratio_1e-3_mu0",
+# The same GetFEM sweeps, paired with dpana's other meshes of the same
+# problem: its leaner disc (_r10), its graded disc (_graded), its graded
+# disc and graded foundation or cavity (_graded_block, the cavity's
+# _graded).
+for name, base in (("hertz_rigid_mu0_r10", "hertz_rigid_mu0"),
+                   ("hertz_rigid_mu0_graded", "hertz_rigid_mu0"),
+                   ("hertz_rigid_mu1_graded", "hertz_rigid_mu1"),
+                   ("hertz_ratio_1_mu0_graded", "hertz_ratio_1_mu0"),
+                   ("hertz_cavity_mu0_graded", "hertz_cavity_mu0"),
+                   ("hertz_cavity_mu1_graded", "hertz_cavity_mu1")):
+    FAMILIES[name] = FAMILIES[base]
+for name in ("hertz_ratio_1_mu0", "hertz_ratio_1_mu1", "hertz_ratio_1e3_mu0",
+             "hertz_ratio_1e3_mu1", "hertz_ratio_1e-3_mu0",
              "hertz_ratio_1e-3_mu1"):
     FAMILIES[name + "_graded_block"] = FAMILIES[name]
-FAMILIES["hertz_cavity_mu1_graded"] = FAMILIES["hertz_cavity_mu1"]
 # The same GetFEM sweeps, paired with dpana's patches around the vertices
 # (families.py VERTEX_VARIANTS).
 for name in ("hertz_rigid_mu0", "hertz_rigid_mu1", "hertz_rigid_mu0_graded",
