@@ -177,6 +177,24 @@ def mesh_apart(records):
     return all("mesh_time" in r for r in records)
 
 
+# Level by level, dofs of the two codes within this fraction: the same mesh
+# (the graded gmsh meshes of the two codes differ by under 2 %).
+SAME_MESH = 0.02
+
+
+def mesh_pairing(codes):
+    """"same mesh" where, at every mesh size h that both codes ran, their
+    dofs differ by at most SAME_MESH; otherwise "dpana's own mesh" (its
+    scene's mesh against GetFEM's, with the same contact elements but more
+    dofs away from the contact), with the range of the dofs ratios."""
+    d = {round(r["h"], 9): r["dofs"] for r in codes["dpana"]["records"]}
+    ratios = [d[round(g["h"], 9)] / g["dofs"]
+              for g in codes["getfem"]["records"] if round(g["h"], 9) in d]
+    if ratios and all(abs(x - 1) <= SAME_MESH for x in ratios):
+        return "same mesh", ratios
+    return "dpana's own mesh", ratios
+
+
 def analyse_runs(runs):
     """Per family (in the order of families.py) and code: the studies of
     its quantities, its records and the scene's Hertz values."""
@@ -397,6 +415,29 @@ def ratio_cells(ratios):
     return [ratio_cell(v) for v in ratios.values()]
 
 
+def comparison_kind(name, codes):
+    """mesh_pairing(), and whether dpana's contact elements are patches
+    around the vertices (families.VERTICES) instead of groups of faces."""
+    fam = family_of(name)
+    patches = any(e.get(k) == v for _, e in fam.levels
+                  for k, v in families.VERTICES.items())
+    return mesh_pairing(codes)[0] + (", patches around the vertices"
+                                     if patches else "")
+
+
+def own_mesh_range(summary):
+    """"(x to y times GetFEM's dofs, family by family at equal h)" over
+    the families where dpana ran its scene's own mesh."""
+    r = []
+    for codes in summary.values():
+        if "getfem" in codes and "dpana" in codes:
+            pairing, ratios = mesh_pairing(codes)
+            if pairing != "same mesh":
+                r += ratios
+    return f"({min(r):.2g} to {max(r):.2g} times GetFEM's dofs at equal h)" \
+        if r else ""
+
+
 def comparison_section(summary):
     md = ["## dpana against GetFEM at equal error", "",
           "Ratio of solve times, dpana / GetFEM, at equal relative error "
@@ -418,10 +459,12 @@ def comparison_section(summary):
           "", "| family | quantity | 1 % | 0.5 % | 0.2 % | 0.1 % | "
           "converged dpana | converged GetFEM | difference |",
           "|---|---|---|---|---|---|---|---|---|"]
-    apart, cells = [], []
+    apart, cells, by_mesh = [], [], []
     for name, sd, sg in compared_studies(summary):
         ratios = equal_error_ratios(sd, sg)
         cells += [(sg["quantity"], v) for v in ratios.values()]
+        by_mesh += [(comparison_kind(name, summary[name]), v)
+                    for v in ratios.values()]
         codes = summary[name]
         label = name if all(mesh_apart(codes[c]["records"])
                             for c in ("dpana", "getfem")) else name + " †"
@@ -442,6 +485,16 @@ def comparison_section(summary):
            "level's time; the other bounds, and the cells where both codes "
            "are within the tolerance on their coarsest levels, decide "
            "nothing (equal_error.py).", ""] + equal_error.tally_table(cells)
+    md += ["", "The same cells by the meshes the two codes ran and by "
+           "dpana's contact elements: the same mesh (dofs within 2 % at "
+           "every common h: the receding block, the two-body blocks, the "
+           "graded discs and blocks, the spheres), or dpana on its scene's "
+           "own mesh, with the same element size on the contact surface and "
+           "another mesh away from it " + own_mesh_range(summary) + "; "
+           "groups of faces (the default) or patches around the vertices "
+           "(`Contact elements = vertices`).", ""] + \
+        equal_error.tally_table(sorted(by_mesh, key=lambda c: c[0]),
+                                "meshes, contact elements")
     md += ["", "Where a tolerance is not resolved above (the converged values "
            "of the codes lie too far apart for a common reference), each "
            "code against its own converged value: the ratio of the times in "

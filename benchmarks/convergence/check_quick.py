@@ -12,7 +12,8 @@
    value (q = 1 + C h^2, h = 1 ... 1/8, times 10 4^k and 100 4^k, the
    ratios worked out by hand below): a code within a tolerance on its
    coarsest level, or one that never reaches it, bounds the ratio from
-   the right side, and the tally counts the bounds that decide the goal.
+   the right side, and the tally counts the bounds that decide the goal;
+   analyse.py tells the same mesh from another by the dofs level by level.
 2. Three coarse levels of the hertz_rigid_mu0_d_shaped family (the
    D-shaped body of prm/hertz_rigid_mu0_d_shaped.prm, 5 contact
    refinements and 0, 1, 2 global
@@ -159,6 +160,25 @@ def check_bounds(fail):
         fail(f"equal error tally: {t}")
 
 
+def check_mesh_pairing(fail):
+    """analyse.mesh_pairing() on records made up here: dofs equal or 1 %
+    apart at every common h are the same mesh; one level 3 % apart, or
+    three times the dofs, are not; levels of one code alone do not count."""
+    def codes(dpana_dofs, getfem_dofs):
+        return {"dpana": {"records": [{"h": 2.0 ** -k, "dofs": n}
+                                      for k, n in enumerate(dpana_dofs)]},
+                "getfem": {"records": [{"h": 2.0 ** -k, "dofs": n}
+                                       for k, n in enumerate(getfem_dofs)]}}
+    cases = [(([100, 400, 1600], [100, 404, 1600, 6400]), "same mesh"),
+             (([100, 400, 1600], [100, 412, 1600]), "dpana's own mesh"),
+             (([300, 1200], [100, 400]), "dpana's own mesh")]
+    for (d, g), expected in cases:
+        got = analyse.mesh_pairing(codes(d, g))[0]
+        if got != expected:
+            fail(f"mesh pairing of dofs {d} and {g}: {got}, expected "
+                 f"{expected}")
+
+
 def check_a_m(dpana, prm_dir, family, levels, load, a_ref, bound, label,
               fail):
     """Runs the levels of family; fails unless each carries the whole load
@@ -235,6 +255,7 @@ def main():
     check_richardson(fail)
     check_equal_error(fail)
     check_bounds(fail)
+    check_mesh_pairing(fail)
     runs = check_hertz(args.dpana, args.prm_dir, fail)
     if runs is not None:
         check_results_file(runs, fail)

@@ -155,9 +155,10 @@ def tally(cells):
     return out
 
 
-def tally_table(cells):
-    """Markdown rows of tally()."""
-    md = ["| quantity | ratios | at 0.2 or below | geometric mean | bounds "
+def tally_table(cells, key="quantity"):
+    """Markdown rows of tally(); @p key names what the cells are grouped
+    by (the first element of each pair)."""
+    md = [f"| {key} | ratios | at 0.2 or below | geometric mean | bounds "
           "that meet the goal (≤ x, x at most 0.2) | bounds that miss it "
           "(≥ x, x above 0.2) | undecided | not reached | not resolved |",
           "|---|---|---|---|---|---|---|---|---|"]
