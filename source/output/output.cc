@@ -4,10 +4,13 @@
 #include <dpana/base/exceptions.h>
 #include <dpana/output/output.h>
 
+#include <deal.II/grid/grid_out.h>
+
 #include <deal.II/numerics/data_out.h>
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace dpana
 {
@@ -43,6 +46,18 @@ namespace dpana
                         "Contact runs: write the condensed contact problem to "
                         "problem.hdf5, an FCLIB local problem (HDF5) for "
                         "other contact solvers.");
+      prm.declare_entry(
+        "Write mesh",
+        "false",
+        Bool(),
+        "Write the mesh each body was solved on as "
+        "body_N.msh (gmsh format 1, as deal.II's GridOut "
+        "writes it: the vertices to full precision, the "
+        "cells, and the boundary faces of nonzero boundary "
+        "id with that id as their physical tag), e.g. to solve the same "
+        "discretisation with another code. Not with a "
+        "distributed mesh (Contact / Parallel mesh = "
+        "distributed), where no rank holds the whole mesh.");
     }
 
 
@@ -54,6 +69,7 @@ namespace dpana
       write_vtu   = prm.get_bool("Write VTU");
       plot        = prm.get_bool("Plot");
       write_fclib = prm.get_bool("Write FCLIB");
+      write_mesh  = prm.get_bool("Write mesh");
       if (directory.empty())
         throw InputError("Output / Directory: must not be empty");
     }
@@ -219,6 +235,37 @@ namespace dpana
     write_vtu_file(const Body<2> &, const std::string &);
     template void
     write_vtu_file(const Body<3> &, const std::string &);
+    template <int dim>
+    void
+    write_meshes(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                 const std::string                             &directory)
+    {
+      dealii::GridOut out;
+      // The boundary faces (in 3D also edges) of nonzero boundary id, with
+      // that id as their physical tag; GridOut leaves out those of id 0.
+      out.set_flags(dealii::GridOutFlags::Msh(true, true));
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          Assert(!bodies[b]->mesh_is_distributed(),
+                 dealii::ExcMessage("a distributed mesh is not whole here"));
+          const std::string name =
+            directory + "/body_" + std::to_string(b + 1) + ".msh";
+          std::ofstream file(name);
+          // Round trip of the coordinates: 17 significant digits.
+          file.precision(std::numeric_limits<double>::max_digits10);
+          out.write_msh(bodies[b]->triangulation(), file);
+          AssertThrow(file, dealii::ExcIO());
+        }
+    }
+
+
+
+    template void
+    write_meshes(const std::vector<std::unique_ptr<Body<2>>> &,
+                 const std::string &);
+    template void
+    write_meshes(const std::vector<std::unique_ptr<Body<3>>> &,
+                 const std::string &);
     template void
     write_bodies(const std::vector<std::unique_ptr<Body<2>>> &,
                  const std::string &,

@@ -18,7 +18,7 @@ namespace dpana
     is_output_file(const std::string &name)
     {
       static const std::regex files(
-        "parameters\\.(prm|json)|summary\\.json|bodies\\.pvd|body_[0-9]+\\.vtu|"
+        "parameters\\.(prm|json)|summary\\.json|bodies\\.pvd|body_[0-9]+\\.(vtu|msh)|"
         "contact_surface\\.vtu|contact\\.(csv|png)|problem\\.hdf5");
       return std::regex_match(name, files);
     }

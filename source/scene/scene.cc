@@ -145,6 +145,11 @@ namespace dpana
       prm.enter_subsection("Output");
       output_parameters.parse_parameters(prm);
       prm.leave_subsection();
+      if (output_parameters.write_mesh && with_contact &&
+          condensation_parameters.distributed_mesh)
+        throw InputError("Output / Write mesh: not with a distributed mesh "
+                         "(Contact / Parallel mesh = distributed), where no "
+                         "rank holds the whole mesh");
 
       std::ostringstream text, json;
       prm.print_parameters(text,
@@ -457,6 +462,8 @@ namespace dpana
           write_bodies_on_all_ranks(bodies, staging);
         else if (output_parameters.write_vtu)
           output::write_bodies(bodies, staging);
+        if (output_parameters.write_mesh)
+          output::write_meshes(bodies, staging);
         if (plot.valid())
           warn(plot.get());
       }

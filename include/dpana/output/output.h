@@ -22,7 +22,8 @@ namespace dpana
      * (parameters.prm, parameters.json), one VTU per body with a PVD record
      * (body_1.vtu, body_2.vtu, bodies.pvd) and summary.json; a contact run
      * adds contact_surface.vtu, contact.csv, contact.png and, if asked,
-     * problem.hdf5.
+     * problem.hdf5; if asked, every run writes the bodies' meshes
+     * (body_1.msh, ...).
      */
     struct Parameters
     {
@@ -30,6 +31,7 @@ namespace dpana
       bool        write_vtu   = true;
       bool        plot        = true;
       bool        write_fclib = false;
+      bool        write_mesh  = false;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -65,6 +67,18 @@ namespace dpana
                  const std::string                             &directory,
                  const unsigned int                             rank    = 0,
                  const unsigned int                             n_ranks = 1);
+
+    /**
+     * Writes DIRECTORY/body_N.msh, the mesh of every body in gmsh format 1
+     * (deal.II's GridOut::write_msh): the vertices to full precision, the
+     * cells, and the boundary faces of nonzero boundary id with that id as
+     * their physical tag. Each body must hold its whole mesh (not a distributed
+     * one).
+     */
+    template <int dim>
+    void
+    write_meshes(const std::vector<std::unique_ptr<Body<dim>>> &bodies,
+                 const std::string                             &directory);
   } // namespace output
 } // namespace dpana
 
