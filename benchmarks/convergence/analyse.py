@@ -487,9 +487,8 @@ def comparison_section(summary):
            "nothing (equal_error.py).", ""] + equal_error.tally_table(cells)
     md += ["", "The same cells by the meshes the two codes ran and by "
            "dpana's contact elements: the same mesh (dofs within 2 % at "
-           "every common h: the receding block, the two-body blocks, the "
-           "graded discs and blocks, the spheres), or dpana on its scene's "
-           "own mesh, with the same element size on the contact surface and "
+           "every common h), or dpana on its scene's own mesh, with the "
+           "same element size on the contact surface as GetFEM's and "
            "another mesh away from it " + own_mesh_range(summary) + "; "
            "groups of faces (the default) or patches around the vertices "
            "(`Contact elements = vertices`).", ""] + \

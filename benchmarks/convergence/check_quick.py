@@ -19,10 +19,11 @@
    refinements and 0, 1, 2 global
    ones; 1638 to 19150 dofs) against an independent computation of the
    same body: GetFEM (nodal contact, Alart-Curnier, P1 triangles; harness
-   getfem/hertz.py --body dshape) at its finest level of the run of
-   README.md (95066 dofs, element size 0.061 mm at the contact), whose
-   values moved by less than 3e-5 (a_m) and 8e-5 (N_max) from the level
-   before: a_m = 8.34183 mm, N_max = 15228.1 MPa. Asserted:
+   getfem/hertz.py --body dshape, on its own gmsh mesh) at its finest
+   level of the sitting of 2026-11-30 (history.md, "The 2D families re-run
+   with GetFEM's memory"; 95066 dofs, element size 0.061 mm at the
+   contact), whose values moved by less than 3e-5 (a_m) and 8e-5 (N_max)
+   from the level before: a_m = 8.34183 mm, N_max = 15228.1 MPa. Asserted:
    - every level carries the whole load: resultant = 100000 N/mm to 1e-9;
    - the error of a_m decreases from level to level and is below 0.3 % at
      level 2. Bands: a_m integrates the pressure, whose error concentrates

@@ -106,7 +106,8 @@ echo "run.sh: load average $(cut -d' ' -f1-3 /proc/loadavg)"
 for f in "${peer[@]}"; do
   "$python" "$here/sweep.py" --dpana "$build/dpana" --prm-dir "$top/prm" \
     --out "$out" --repeat "$repeat" "${full[@]}" "$f"
-  "$python" "$here/getfem/sweep.py" --out "$out" --repeat "$repeat" "${full[@]}" "$f"
+  "$python" "$here/getfem/sweep.py" --dpana "$build/dpana" --out "$out" \
+    --repeat "$repeat" "${full[@]}" "$f"
 done
 if [ ${#rest[@]} -gt 0 ]; then
   "$python" "$here/sweep.py" --dpana "$build/dpana" --prm-dir "$top/prm" \

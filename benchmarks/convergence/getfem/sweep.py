@@ -5,14 +5,18 @@ dpana sweep (code "getfem").
 
 Families (each compared with the dpana family of the same name,
 families.py):
-  hertz_rigid_mu0           hertz.py --body circle (the circular body)
-  hertz_rigid_mu0_r10       the same (paired with dpana's disc refined
-                            within 10 mm instead of 14)
-  hertz_rigid_mu0_graded, hertz_rigid_mu1_graded
-                            the same as hertz_rigid_mu0, _mu1 (paired with
-                            dpana's graded gmsh mesh of the disc)
-  hertz_rigid_mu0_d_shaped  hertz.py --body dshape (the quarter disc below
-                            the centre)
+  hertz_rigid_mu0_graded    hertz.py --body circle (the circular body on
+                            gmsh's graded mesh, which dpana's graded family
+                            reads too)
+  hertz_rigid_mu0, hertz_rigid_mu1, hertz_rigid_mu0_r10
+                            hertz.py --body circle [--mu 1] --mesh: the
+                            circular body on dpana's own level meshes (the
+                            right half disc with contact refinements within
+                            14 mm, or 10 mm for _r10), which dpana writes
+                            for each level first (ON_DPANA_MESH; needs
+                            --dpana)
+  hertz_rigid_mu0_d_shaped  hertz.py --body dshape --mesh (the quarter
+                            disc below the centre, on dpana's level meshes)
   receding_2d_mu0           receding.py
   receding_2d_mu1           receding.py --mu 1
   two_body_ratio_1, _1e-3, _1e3
@@ -30,7 +34,7 @@ families.py):
   hertz_ratio_1e3_mu0_graded_block
                             the same as hertz_ratio_1e3_mu0 (paired with
                             dpana's graded disc and graded foundation)
-  hertz_rigid_mu1, hertz_ratio_*_mu1
+  hertz_rigid_mu1_graded, hertz_ratio_*_mu1
                             the same with --mu 1 (Coulomb friction)
   hertz_cavity_mu0, hertz_cavity_mu1
                             hertz.py --body circle --cavity [--mu 1] (the
@@ -58,18 +62,31 @@ families.py):
   hertz_two_spheres_nested  sphere.py --two --nested -2 (the same on nested
                             meshes)
 
-  sweep.py --out results [--full] [--repeat N] [FAMILY ...]
+  sweep.py --out results [--full] [--repeat N] [--dpana BUILD/dpana]
+           [FAMILY ...]
 """
 
+import importlib.util
 import json
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-import records as records_io  # noqa: E402  (benchmarks/convergence/)
+import families as dpana_families  # noqa: E402  (benchmarks/convergence/)
+import prm_edit  # noqa: E402
+import records as records_io  # noqa: E402
+
+# dpana's sweep.py, by its path: this file has the same module name.
+_spec = importlib.util.spec_from_file_location(
+    "dpana_sweep", os.path.join(os.path.dirname(HERE), "sweep.py"))
+dpana_sweep = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(dpana_sweep)
+
+PRM_DIR = os.path.join(HERE, "..", "..", "..", "prm")
 
 
 def circle_on_block(ratio, *options):
@@ -85,6 +102,8 @@ def circle_on_block(ratio, *options):
 # loaded 2-core machine (the two-body brick between non-matching meshes
 # grows about eightfold per level, the 3D levels fourfold).
 FAMILIES = {
+    "hertz_rigid_mu0_graded": (["hertz.py", "--body", "circle"],
+                               range(-2, 5), [5]),
     "hertz_rigid_mu0": (["hertz.py", "--body", "circle"], range(-2, 5),
                         [5]),
     "hertz_rigid_mu0_d_shaped": (["hertz.py", "--body", "dshape"],
@@ -99,6 +118,8 @@ FAMILIES = {
     "hertz_ratio_1_mu0": circle_on_block("1"),
     "hertz_ratio_1e-3_mu0": circle_on_block("1e-3"),
     "hertz_ratio_1e3_mu0": circle_on_block("1e3"),
+    "hertz_rigid_mu1_graded": (["hertz.py", "--body", "circle", "--mu",
+                                "1"], range(-2, 5), [5]),
     "hertz_rigid_mu1": (["hertz.py", "--body", "circle", "--mu", "1"],
                         range(-2, 5), [5]),
     "hertz_cavity_mu0": (["hertz.py", "--body", "circle", "--cavity"],
@@ -128,8 +149,6 @@ for ratio in ("1", "1e-3", "1e3"):
 # disc and graded foundation or cavity (_graded_block, the cavity's
 # _graded).
 for name, base in (("hertz_rigid_mu0_r10", "hertz_rigid_mu0"),
-                   ("hertz_rigid_mu0_graded", "hertz_rigid_mu0"),
-                   ("hertz_rigid_mu1_graded", "hertz_rigid_mu1"),
                    ("hertz_ratio_1_mu0_graded", "hertz_ratio_1_mu0"),
                    ("hertz_cavity_mu0_graded", "hertz_cavity_mu0"),
                    ("hertz_cavity_mu1_graded", "hertz_cavity_mu1")):
@@ -145,6 +164,15 @@ for name in ("hertz_rigid_mu0", "hertz_rigid_mu1", "hertz_rigid_mu0_graded",
              "hertz_rigid_mu0_d_shaped", "hertz_sphere_rigid",
              "hertz_two_spheres"):
     FAMILIES[name + "_vertices"] = FAMILIES[name]
+# Families whose body GetFEM solves on dpana's own mesh of each level
+# (hertz.py --mesh), so that both codes solve the same discretisation: dpana
+# writes it first (dpana_mesh(); the patches around the vertices do not
+# change the mesh).
+ON_DPANA_MESH = tuple(
+    name + variant for name in ("hertz_rigid_mu0", "hertz_rigid_mu1",
+                                "hertz_rigid_mu0_r10",
+                                "hertz_rigid_mu0_d_shaped")
+    for variant in ("", "_vertices"))
 # h of a level, in the units of the dpana family (families.py).
 H = {"hertz.py": lambda level: 2.0 ** -level,
      "receding.py": lambda level: 40.0 / (4 * 2 ** level),
@@ -201,32 +229,65 @@ def run_level(python, args, level, timeout):
 TIMEOUTS = {"hertz_sphere_rigid_nested3": 3600}
 
 
-def run(python, family, full, timeout, repeat):
+def dpana_mesh(dpana, family, h, directory, timeout):
+    """Runs dpana on the level of @p family (families.py) of mesh size @p h
+    in @p directory with `Output / Write mesh`, and returns the path of the
+    body's mesh, body_1.msh. Not timed: it stands for GetFEM's gmsh
+    meshing."""
+    fam = {f.name: f for f in dpana_families.FAMILIES}[family]
+    edits = [e for hh, e in fam.levels + fam.full if abs(hh - h) <= 1e-9 * h]
+    if not edits:
+        raise SystemExit(f"getfem/sweep.py: error: {family} has no dpana "
+                         f"level of h = {h}")
+    text = prm_edit.set_entry(dpana_sweep.level_text(fam, PRM_DIR, edits[0]),
+                              "Output/Write mesh", "true")
+    with open(os.path.join(directory, "scene.prm"), "w") as f:
+        f.write(text)
+    subprocess.run([os.path.abspath(dpana), "scene.prm"], cwd=directory,
+                   check=True, capture_output=True, timeout=timeout)
+    return os.path.join(directory, "output", "body_1.msh")
+
+
+def run(python, family, full, timeout, repeat, dpana=None):
     """The levels of family, each run repeat times (a short one more:
-    records.fastest_of_runs), the fastest kept."""
+    records.fastest_of_runs), the fastest kept; on dpana's mesh of the level
+    for the families of ON_DPANA_MESH."""
     args, levels, extra = FAMILIES[family]
     timeout = max(timeout, TIMEOUTS.get(family, 0))
     records = []
     for level in list(levels) + (list(extra) if full else []):
-        records.append(records_io.fastest_of_runs(
-            lambda: run_level(python, args, level, timeout), repeat))
+        with tempfile.TemporaryDirectory(prefix="getfem_dpana_mesh_") as tmp:
+            level_args = args
+            if family in ON_DPANA_MESH:
+                level_args = args + ["--mesh", dpana_mesh(
+                    dpana, family, h_of(args, level), tmp, timeout)]
+            records.append(records_io.fastest_of_runs(
+                lambda: run_level(python, level_args, level, timeout),
+                repeat))
         if not records_io.progress(records[-1]):
             break
     return records
 
 
 def main():
-    args = records_io.parser(__doc__.splitlines()[0]).parse_args()
+    parser = records_io.parser(__doc__.splitlines()[0])
+    parser.add_argument("--dpana", default=None,
+                        help="the dpana binary, which writes the meshes of "
+                        "the families on dpana's meshes (ON_DPANA_MESH)")
+    args = parser.parse_args()
     names = args.family or list(FAMILIES)
     for name in names:
         if name not in FAMILIES:
             sys.exit(f"getfem/sweep.py: error: unknown family {name}")
+        if name in ON_DPANA_MESH and args.dpana is None:
+            sys.exit(f"getfem/sweep.py: error: {name} solves on dpana's "
+                     "meshes: give --dpana BUILD/dpana")
     os.makedirs(args.out, exist_ok=True)
     load = records_io.load_average()
     for name in names:
         print(f"== GetFEM {name}", flush=True)
         records = run(sys.executable, name, args.full, args.timeout,
-                      args.repeat)
+                      args.repeat, args.dpana)
         records_io.write(args.out, name, "getfem", records, load)
 
 
