@@ -30,10 +30,13 @@ Candidate contact nodes: the arc within x <= 15 mm.
   --mu MU         Coulomb friction MU (the *_mu1 scenes: 1) in the same
                   nodal brick (its tangential multipliers), residual 1e-10
                   of the load instead of 1e-8 (see solve()).
-  --mesh FILE     on the rigid plane, the body's mesh from FILE instead of
-                  gmsh's: the mesh dpana solved a level on, written by its
-                  `Output / Write mesh` (gmsh format 1), so that both codes
-                  solve the same discretisation; the level only names h_c.
+  --mesh FILE [FILE2]
+                  the meshes from these files instead of gmsh's: the body's,
+                  and with --ratio or --cavity the foundation's or the
+                  cavity's; the meshes dpana solved a level on, written by
+                  its `Output / Write mesh` (gmsh format 1), so that both
+                  codes solve the same discretisation; the level only names
+                  h_c.
 Between two bodies the pressures are the nodal forces along y (see
 contact_model.ElasticBody.master_directions).
 
@@ -164,24 +167,27 @@ def main():
                         "(E1/E2 = 1)")
     parser.add_argument("--mu", type=float, default=0.0,
                         help="Coulomb friction coefficient (default 0)")
-    parser.add_argument("--mesh", default=None,
-                        help="the body's mesh (gmsh file, e.g. dpana's "
-                        "body_1.msh) instead of gmsh's; rigid plane only")
+    parser.add_argument("--mesh", nargs="+", default=None,
+                        help="the meshes of the body (and of the foundation "
+                        "or the cavity) instead of gmsh's, e.g. dpana's "
+                        "body_1.msh (body_2.msh)")
     args = parser.parse_args()
-    if args.mesh is not None and (args.ratio is not None or args.cavity):
-        parser.error("--mesh: the rigid plane only (no --ratio, --cavity)")
     if args.cavity:
         if args.ratio not in (None, 1.0):
             parser.error("--cavity has equal moduli: no --ratio")
         args.ratio = 1.0
     if args.mu < 0:
         parser.error("--mu must be >= 0")
+    if args.mesh is not None and \
+            len(args.mesh) != (1 if args.ratio is None else 2):
+        parser.error("--mesh: one file on the rigid plane, two with --ratio "
+                     "or --cavity")
     hc = level_size(args.level)
     rho = 14.0 if args.ratio is None else 21.0 if args.cavity else 17.0
     with tempfile.TemporaryDirectory(prefix="getfem_hertz_") as tmp:
         start = time.perf_counter()
-        msh = [args.mesh or level_mesh(args.body, args.level, rho, tmp)]
-        if args.ratio is not None:
+        msh = args.mesh or [level_mesh(args.body, args.level, rho, tmp)]
+        if args.ratio is not None and args.mesh is None:
             msh.append(level_mesh("cavity" if args.cavity else "block",
                                   args.level, rho, tmp))
         gmsh_time = time.perf_counter() - start

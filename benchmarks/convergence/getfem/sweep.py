@@ -22,28 +22,25 @@ families.py):
   two_body_ratio_1, _1e-3, _1e3
                             two_body.py --ratio 1, 1e-3, 1e3 (the block on
                             the elastic foundation, mu = 1)
-  hertz_ratio_1_mu0         hertz.py --body circle --ratio 1 (the circular
-                            body on the elastic block, equal moduli)
-  hertz_ratio_1_mu0_graded  the same (paired with dpana's graded disc)
   hertz_ratio_1_mu0_graded_block
-                            the same (paired with dpana's graded disc and
-                            graded foundation)
-  hertz_ratio_1e-3_mu0, hertz_ratio_1e3_mu0
+                            hertz.py --body circle --ratio 1 (the circular
+                            body on the elastic block, equal moduli; gmsh's
+                            meshes of both bodies, which dpana reads too)
+  hertz_ratio_1e-3_mu0_graded_block, hertz_ratio_1e3_mu0_graded_block
                             hertz.py --body circle --ratio 1e-3, 1e3 (the
                             body on a block 1000 times stiffer, softer)
-  hertz_ratio_1e3_mu0_graded_block
-                            the same as hertz_ratio_1e3_mu0 (paired with
-                            dpana's graded disc and graded foundation)
-  hertz_rigid_mu1_graded, hertz_ratio_*_mu1
+  hertz_rigid_mu1_graded, hertz_ratio_*_mu1_graded_block
                             the same with --mu 1 (Coulomb friction)
-  hertz_cavity_mu0, hertz_cavity_mu1
+  hertz_cavity_mu0_graded, hertz_cavity_mu1_graded
                             hertz.py --body circle --cavity [--mu 1] (the
-                            circular body in the cavity R = 120 mm)
-  hertz_cavity_mu0_graded   the same as hertz_cavity_mu0 (paired with
-                            dpana's graded disc and graded cavity)
-  hertz_ratio_{1,1e3}_mu1_graded_block, hertz_ratio_1e-3_mu{0,1}_graded_block,
-  hertz_cavity_mu1_graded   the same as the families without _graded...
-                            (paired with dpana's graded meshes)
+                            circular body in the cavity R = 120 mm, on
+                            gmsh's meshes, which dpana reads too)
+  hertz_ratio_*_mu0, hertz_ratio_*_mu1, hertz_ratio_1_mu0_graded,
+  hertz_cavity_mu0, hertz_cavity_mu1
+                            the same sweeps (paired with dpana's scene
+                            meshes: on those GetFEM's nodal contact between
+                            non-matching meshes gives an N_max that does not
+                            converge, history.md)
   hertz_rigid_*_vertices, hertz_sphere_rigid_vertices,
   hertz_two_spheres_vertices
                             the same as the family without _vertices
@@ -166,7 +163,7 @@ for name in ("hertz_rigid_mu0", "hertz_rigid_mu1", "hertz_rigid_mu0_graded",
     FAMILIES[name + "_vertices"] = FAMILIES[name]
 # Families whose body GetFEM solves on dpana's own mesh of each level
 # (hertz.py --mesh), so that both codes solve the same discretisation: dpana
-# writes it first (dpana_mesh(); the patches around the vertices do not
+# writes it first (dpana_meshes(); the patches around the vertices do not
 # change the mesh).
 ON_DPANA_MESH = tuple(
     name + variant for name in ("hertz_rigid_mu0", "hertz_rigid_mu1",
@@ -229,11 +226,11 @@ def run_level(python, args, level, timeout):
 TIMEOUTS = {"hertz_sphere_rigid_nested3": 3600}
 
 
-def dpana_mesh(dpana, family, h, directory, timeout):
+def dpana_meshes(dpana, family, h, directory, timeout):
     """Runs dpana on the level of @p family (families.py) of mesh size @p h
-    in @p directory with `Output / Write mesh`, and returns the path of the
-    body's mesh, body_1.msh. Not timed: it stands for GetFEM's gmsh
-    meshing."""
+    in @p directory with `Output / Write mesh`, and returns the paths of the
+    bodies' meshes, body_1.msh (and body_2.msh). Not timed: it stands for
+    GetFEM's gmsh meshing."""
     fam = {f.name: f for f in dpana_families.FAMILIES}[family]
     edits = [e for hh, e in fam.levels + fam.full if abs(hh - h) <= 1e-9 * h]
     if not edits:
@@ -245,7 +242,10 @@ def dpana_mesh(dpana, family, h, directory, timeout):
         f.write(text)
     subprocess.run([os.path.abspath(dpana), "scene.prm"], cwd=directory,
                    check=True, capture_output=True, timeout=timeout)
-    return os.path.join(directory, "output", "body_1.msh")
+    return [os.path.join(directory, "output", f"body_{b}.msh")
+            for b in (1, 2)
+            if os.path.exists(os.path.join(directory, "output",
+                                           f"body_{b}.msh"))]
 
 
 def run(python, family, full, timeout, repeat, dpana=None):
@@ -259,7 +259,7 @@ def run(python, family, full, timeout, repeat, dpana=None):
         with tempfile.TemporaryDirectory(prefix="getfem_dpana_mesh_") as tmp:
             level_args = args
             if family in ON_DPANA_MESH:
-                level_args = args + ["--mesh", dpana_mesh(
+                level_args = args + ["--mesh", *dpana_meshes(
                     dpana, family, h_of(args, level), tmp, timeout)]
             records.append(records_io.fastest_of_runs(
                 lambda: run_level(python, level_args, level, timeout),
