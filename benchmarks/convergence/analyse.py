@@ -185,8 +185,9 @@ SAME_MESH = 0.02
 def mesh_pairing(codes):
     """"same mesh" where, at every mesh size h that both codes ran, their
     dofs differ by at most SAME_MESH; otherwise "dpana's own mesh" (its
-    scene's mesh against GetFEM's, with the same contact elements but more
-    dofs away from the contact), with the range of the dofs ratios."""
+    scene's mesh against GetFEM's, with the same element size on the
+    contact surface and another mesh away from it); with the ratios of the
+    dofs, dpana's over GetFEM's, at the common h."""
     d = {round(r["h"], 9): r["dofs"] for r in codes["dpana"]["records"]}
     ratios = [d[round(g["h"], 9)] / g["dofs"]
               for g in codes["getfem"]["records"] if round(g["h"], 9) in d]

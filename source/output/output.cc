@@ -235,6 +235,9 @@ namespace dpana
     write_vtu_file(const Body<2> &, const std::string &);
     template void
     write_vtu_file(const Body<3> &, const std::string &);
+
+
+
     template <int dim>
     void
     write_meshes(const std::vector<std::unique_ptr<Body<dim>>> &bodies,

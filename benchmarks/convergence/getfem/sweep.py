@@ -141,10 +141,10 @@ FAMILIES = {
 }
 for ratio in ("1", "1e-3", "1e3"):
     FAMILIES[f"hertz_ratio_{ratio}_mu1"] = circle_on_block(ratio, "--mu", "1")
-# The same GetFEM sweeps, paired with dpana's other meshes of the same
-# problem: its leaner disc (_r10), its graded disc (_graded), its graded
-# disc and graded foundation or cavity (_graded_block, the cavity's
-# _graded).
+# The same GetFEM runs for dpana's other meshes of the same problem: its
+# leaner disc (_r10, on that disc: ON_DPANA_MESH below), its graded disc on
+# the scene's block (_graded), its graded disc and graded foundation or
+# cavity (_graded_block, the cavity's _graded).
 for name, base in (("hertz_rigid_mu0_r10", "hertz_rigid_mu0"),
                    ("hertz_ratio_1_mu0_graded", "hertz_ratio_1_mu0"),
                    ("hertz_cavity_mu0_graded", "hertz_cavity_mu0"),
