@@ -231,7 +231,7 @@ def dpana_meshes(dpana, family, h, directory, timeout):
     in @p directory with `Output / Write mesh`, and returns the paths of the
     bodies' meshes, body_1.msh (and body_2.msh). Not timed: it stands for
     GetFEM's gmsh meshing."""
-    fam = {f.name: f for f in dpana_families.FAMILIES}[family]
+    fam = dpana_families.BY_NAME[family]
     edits = [e for hh, e in fam.levels + fam.full if abs(hh - h) <= 1e-9 * h]
     if not edits:
         raise SystemExit(f"getfem/sweep.py: error: {family} has no dpana "
@@ -242,10 +242,9 @@ def dpana_meshes(dpana, family, h, directory, timeout):
         f.write(text)
     subprocess.run([os.path.abspath(dpana), "scene.prm"], cwd=directory,
                    check=True, capture_output=True, timeout=timeout)
-    return [os.path.join(directory, "output", f"body_{b}.msh")
-            for b in (1, 2)
-            if os.path.exists(os.path.join(directory, "output",
-                                           f"body_{b}.msh"))]
+    paths = [os.path.join(directory, "output", f"body_{b}.msh")
+             for b in (1, 2)]
+    return [p for p in paths if os.path.exists(p)]
 
 
 def run(python, family, full, timeout, repeat, dpana=None):
