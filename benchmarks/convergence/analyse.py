@@ -460,10 +460,13 @@ def comparison_section(summary):
           "", "| family | quantity | 1 % | 0.5 % | 0.2 % | 0.1 % | "
           "converged dpana | converged GetFEM | difference |",
           "|---|---|---|---|---|---|---|---|---|"]
-    apart, cells, by_mesh = [], [], []
+    apart, cells, by_mesh, by_time = [], [], [], []
     for name, sd, sg in compared_studies(summary):
-        ratios = equal_error_ratios(sd, sg)
+        both = equal_error.equal_error_cells(sd, sg)
+        ratios = {tol: c[0] for tol, c in both.items()}
         cells += [(sg["quantity"], v) for v in ratios.values()]
+        by_time += [(equal_error.peer_time_class(tg), v)
+                    for v, tg in both.values() if tg is not None]
         by_mesh += [(comparison_kind(name, summary[name]), v)
                     for v in ratios.values()]
         codes = summary[name]
@@ -495,6 +498,15 @@ def comparison_section(summary):
            "(`Contact elements = vertices`).", ""] + \
         equal_error.tally_table(sorted(by_mesh, key=lambda c: c[0]),
                                 "meshes, contact elements")
+    md += ["", "The same cells by what the answer costs the peer: GetFEM's "
+           "time to the tolerance (a bound by its value: the time of "
+           "GetFEM's coarsest level where that level is within the "
+           "tolerance, of its finest where it does not reach it; the cells "
+           "not resolved left out).", ""] + \
+        equal_error.tally_table(
+            [(equal_error.PEER_TIME_LABELS[k], v)
+             for k, v in sorted(by_time, key=lambda c: c[0])],
+            "GetFEM's time to the tolerance")
     md += ["", "Where a tolerance is not resolved above (the converged values "
            "of the codes lie too far apart for a common reference), each "
            "code against its own converged value: the ratio of the times in "

@@ -13,7 +13,9 @@
    ratios worked out by hand below): a code within a tolerance on its
    coarsest level, or one that never reaches it, bounds the ratio from
    the right side, and the tally counts the bounds that decide the goal;
-   analyse.py tells the same mesh from another by the dofs level by level.
+   GetFEM's time to each tolerance, by which the cells are classed, is
+   its levels' time, interpolated, or its bound; analyse.py tells the
+   same mesh from another by the dofs level by level.
 2. Three coarse levels of the hertz_rigid_mu0_d_shaped family (the
    D-shaped body of prm/hertz_rigid_mu0_d_shaped.prm, 5 contact
    refinements and 0, 1, 2 global
@@ -150,6 +152,21 @@ def check_bounds(fail):
             if not same_ratio(got[tol], v):
                 fail(f"equal error bounds at {tol}: got {got[tol]}, "
                      f"expected {v}")
+    # GetFEM's times to the tolerances, from which the cells are classed by
+    # what the answer costs the peer: slow at 1 % 800 (above), at 0.5 %
+    # 1600 (level 2 errs by 0.005 exactly), at 0.2 % 4000, at 0.1 % more
+    # than its finest level's 6400.
+    peer = {tol: c[1] for tol, c in
+            equal_error.equal_error_cells(fast, slow).items()}
+    expected = {0.01: (800.0, "="), 0.005: (1600.0, "="),
+                0.002: (4000.0, "="), 0.001: (6400.0, ">")}
+    if any(peer[t][1] != v[1] or abs(peer[t][0] / v[0] - 1) > 1e-9
+           for t, v in expected.items()):
+        fail(f"equal error: GetFEM's times {peer}, expected {expected}")
+    classes = [equal_error.peer_time_class(tg) for tg in (
+        (0.005, "="), (0.01, "="), (0.099, "≤"), (0.1, "="), (6400.0, ">"))]
+    if classes != [0, 1, 1, 2, 3]:
+        fail(f"peer time classes {classes}, expected [0, 1, 1, 2, 3]")
     t = equal_error.tally(
         [("q", r) for r in equal_error.equal_error_ratios(fast, slow).values()]
         + [("q", r) for r in equal_error.equal_error_ratios(slow, fast)

@@ -22,6 +22,11 @@ above it misses it; the other bounds decide nothing. Counting only the
 ratios would leave out cells whose verdict is known: a peer accurate on
 its coarsest level is exactly where dpana may fall short, and a peer that
 does not reach a tolerance where dpana does is where dpana is ahead.
+
+The cells are also classed by GetFEM's time to the tolerance
+(peer_time_class()): what the answer costs the peer, from the
+milliseconds of a coarse mesh, where a fresh process's first use of the
+code weighs on both timers, to seconds.
 """
 
 import collections
@@ -83,21 +88,26 @@ def common_reference(sd, sg):
     return ref, abs(sd["reference"] - sg["reference"]) / abs(ref)
 
 
-def equal_error_ratios(sd, sg):
-    """time_ratio() per tolerance, both codes against common_reference(); a
-    tolerance below twice the distance between the two converged values is
-    "not resolved"."""
+def equal_error_cells(sd, sg):
+    """Per tolerance, both codes against common_reference(): (time_ratio(),
+    GetFEM's time_to()); a tolerance below twice the distance between the
+    two converged values is ("not resolved", None)."""
     ref, spread = common_reference(sd, sg)
     out = {}
     for tol in TOLERANCES:
         if tol < 2 * spread:
-            out[tol] = "not resolved"
+            out[tol] = ("not resolved", None)
             continue
-        out[tol] = time_ratio(*(time_to(
-            s["times"], richardson.time_to_tolerance(
-                s["times"], richardson.relative_errors(s["values"], ref),
-                tol)) for s in (sd, sg)))
+        td, tg = (time_to(s["times"], richardson.time_to_tolerance(
+            s["times"], richardson.relative_errors(s["values"], ref), tol))
+            for s in (sd, sg))
+        out[tol] = (time_ratio(td, tg), tg)
     return out
+
+
+def equal_error_ratios(sd, sg):
+    """The ratios of equal_error_cells()."""
+    return {tol: c[0] for tol, c in equal_error_cells(sd, sg).items()}
 
 
 def own_limit_ratios(sd, sg):
@@ -111,6 +121,20 @@ def own_limit_ratios(sd, sg):
             else time_ratio(time_to(sd["times"], sd["reach"][tol]),
                             time_to(sg["times"], sg["reach"][tol]))
             for tol in TOLERANCES}
+
+
+# What the answer costs the peer: classes of GetFEM's time to a tolerance,
+# split at PEER_TIME_EDGES (s), named by PEER_TIME_LABELS.
+PEER_TIME_EDGES = (0.01, 0.1, 1.0)
+PEER_TIME_LABELS = ("under 0.01 s", "0.01 to 0.1 s", "0.1 to 1 s",
+                    "1 s or more")
+
+
+def peer_time_class(tg):
+    """The index in PEER_TIME_LABELS of GetFEM's time_to() @p tg. A bound
+    counts by its value: the coarsest level's time where GetFEM is within
+    the tolerance there, the finest level's where it does not reach it."""
+    return sum(tg[0] >= e for e in PEER_TIME_EDGES)
 
 
 def verdict(ratio):
