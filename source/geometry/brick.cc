@@ -77,6 +77,19 @@ namespace dpana
         "corner) is moved to relative distance t^p; p = 1 is a uniform grid, "
         "p > 1 makes the cells next to the plane smaller (the first of n "
         "layers by the factor n^(p-1)) and those far from it larger.");
+      if (dim == 2)
+        prm.declare_entry(
+          "Diagonals",
+          "one direction",
+          dealii::Patterns::Selection("one direction|alternating"),
+          "How each rectangle of the grid is split into 2 triangles. one "
+          "direction: every diagonal runs the same way (deal.II's split). "
+          "alternating: the direction alternates from rectangle to rectangle "
+          "as on a checkerboard, so that the mesh is mirror-symmetric about "
+          "every grid line. Choose it for a half model whose symmetry axis is "
+          "a side: its mesh is then the half of a symmetric whole, and the "
+          "tractions next to the axis carry no bias from the handedness of "
+          "the triangles (doc/geometry.md).");
       prm.declare_entry(
         "Load patch centre",
         repeat("0", dim),
@@ -118,6 +131,7 @@ namespace dpana
       patch_centre     = parse_point<dim>(prm.get("Load patch centre"),
                                       path + " / Load patch centre");
       patch_half_width = prm.get_double("Load patch half width");
+      alternating      = dim == 2 && prm.get("Diagonals") == "alternating";
       for (unsigned int d = 0; d < dim; ++d)
         {
           if (!(upper_corner[d] > lower_corner[d]))
@@ -174,6 +188,7 @@ namespace dpana
           cells += (d == 0 ? "" : " x ") + std::to_string(subdivisions[d]);
         }
       return sizes + ", " + cells + " subdivisions" +
+             (alternating ? ", alternating diagonals" : "") +
              (graded() ? ", graded" : "") +
              (patch_half_width > 0. ?
                 ", load patch half width " +
@@ -216,12 +231,68 @@ namespace dpana
       dealii::Triangulation<dim> &tria,
       const unsigned int          n_global_refinements) const
     {
-      dealii::GridGenerator::subdivided_hyper_rectangle_with_simplices(
-        tria, subdivisions, lower_corner, upper_corner, false);
+      if (alternating)
+        create_alternating_triangles(tria);
+      else
+        dealii::GridGenerator::subdivided_hyper_rectangle_with_simplices(
+          tria, subdivisions, lower_corner, upper_corner, false);
       if (graded())
         apply_grading(tria);
       tria.refine_global(n_global_refinements);
       set_boundary_ids(tria);
+    }
+
+
+
+    // The grid of Subdivisions rectangles with the vertices a, b, c, d
+    // (lower left, lower right, upper right, upper left, counterclockwise),
+    // each split along the diagonal a-c where i + j is even and b-d where it
+    // is odd. Reflecting the grid about the line x = x_i maps the rectangle
+    // (i + k, j) onto (i - 1 - k, j), whose parity differs, and its diagonal
+    // a-c onto a diagonal b-d: the split is mirror-symmetric about every
+    // grid line, in x and in y.
+    template <int dim>
+    void
+    Brick<dim>::create_alternating_triangles(
+      dealii::Triangulation<dim> &tria) const
+    {
+      Assert(dim == 2, dealii::ExcNotImplemented());
+      const unsigned int nx = subdivisions[0], ny = subdivisions[1];
+      std::vector<dealii::Point<dim>> vertices;
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i <= nx; ++i)
+          {
+            dealii::Point<dim> x = lower_corner;
+            x[0] += (upper_corner[0] - lower_corner[0]) * i / nx;
+            x[1] += (upper_corner[1] - lower_corner[1]) * j / ny;
+            vertices.push_back(x);
+          }
+      const auto vertex = [nx](const unsigned int i, const unsigned int j) {
+        return j * (nx + 1) + i;
+      };
+      std::vector<dealii::CellData<dim>> cells;
+      const auto add = [&cells](const std::vector<unsigned int> &v) {
+        dealii::CellData<dim> cell(v.size());
+        cell.vertices = v;
+        cells.push_back(cell);
+      };
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const unsigned int a = vertex(i, j), b = vertex(i + 1, j),
+                               c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+            if ((i + j) % 2 == 0)
+              {
+                add({a, b, c});
+                add({a, c, d});
+              }
+            else
+              {
+                add({a, b, d});
+                add({b, c, d});
+              }
+          }
+      tria.create_triangulation(vertices, cells, dealii::SubCellData());
     }
 
 

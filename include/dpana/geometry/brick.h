@@ -21,7 +21,10 @@ namespace dpana
      * rectangle of the grid is split into 2 triangles, each brick into 5
      * tetrahedra (GridGenerator::subdivided_hyper_rectangle_with_simplices,
      * without colorize, which throws for simplices in deal.II 9.4), and the
-     * global refinements act on the simplices.
+     * global refinements act on the simplices. In 2D, `Diagonals =
+     * alternating` splits the rectangles along diagonals that alternate as
+     * on a checkerboard instead, a mesh mirror-symmetric about every grid
+     * line (a half model is then the half of a symmetric mesh).
      *
      * The optional grading is a vertex transformation acting on each
      * coordinate separately: with the grading centre $c$, the corners
@@ -53,7 +56,8 @@ namespace dpana
 
       /**
        * Declares Lower corner, Upper corner, Subdivisions, Grading centre,
-       * Grading exponents, Load patch centre and Load patch half width.
+       * Grading exponents, (in 2D) Diagonals, Load patch centre and Load
+       * patch half width.
        */
       static void
       declare_parameters(dealii::ParameterHandler &prm);
@@ -92,9 +96,18 @@ namespace dpana
       std::vector<double>       grading_exponents;
       dealii::Point<dim>        patch_centre;
       double                    patch_half_width = 0.;
+      // Diagonals = alternating (2D only).
+      bool alternating = false;
 
       bool
       graded() const;
+
+      /**
+       * The 2D grid split along alternating diagonals (Diagonals =
+       * alternating).
+       */
+      void
+      create_alternating_triangles(dealii::Triangulation<dim> &tria) const;
 
       void
       apply_grading(dealii::Triangulation<dim> &tria) const;

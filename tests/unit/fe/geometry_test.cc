@@ -128,6 +128,67 @@ TEST(Geometry, RectangleGradingMovesVerticesAsDocumented)
 
 
 
+namespace
+{
+  // The triangles of a mesh as sets of their vertices, rounded to 1e-9 mm,
+  // after the map x -> a + b x of the first coordinate.
+  std::set<std::set<std::pair<long, long>>>
+  cells_mapped(const dealii::Triangulation<2> &tria,
+               const double                    a,
+               const double                    b)
+  {
+    std::set<std::set<std::pair<long, long>>> cells;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        std::set<std::pair<long, long>> v;
+        for (const unsigned int i : cell->vertex_indices())
+          v.emplace(std::lround((a + b * cell->vertex(i)[0]) * 1e9),
+                    std::lround(cell->vertex(i)[1] * 1e9));
+        cells.insert(v);
+      }
+    return cells;
+  }
+} // namespace
+
+
+
+// Diagonals = alternating: a mesh mirror-symmetric about its grid lines. On
+// 6 x 3 rectangles the reflection about the middle line x = 30 (3 rectangles
+// on each side) maps the mesh onto itself; with every diagonal running one
+// way it maps each diagonal onto one the mesh does not have. The counts,
+// the measures and the boundary faces stay those of the other split.
+TEST(Geometry, RectangleAlternatingDiagonalsAreMirrorSymmetric)
+{
+  for (const std::string diagonals : {"alternating", "one direction"})
+    {
+      const auto geometry = make_geometry<2>(
+        "set Type = rectangle\n" +
+        shape("Rectangle",
+              "set Lower corner = 0, 0\nset Upper corner = 60, 30\n"
+              "set Subdivisions = 6, 3\nset Diagonals = " +
+                diagonals + "\n"));
+      dealii::Triangulation<2> tria;
+      geometry.create_triangulation(tria);
+      const Measures m = measure(tria);
+      EXPECT_EQ(m.n_cells, 6u * 3 * 2);
+      EXPECT_GT(m.min_jxw, 0.);
+      expect_relative(m.volume, 60. * 30.);
+      EXPECT_EQ(m.n_boundary_faces.at(geometry.boundary_id("bottom")), 6u);
+      EXPECT_EQ(m.n_boundary_faces.at(geometry.boundary_id("left")), 3u);
+      EXPECT_EQ(cells_mapped(tria, 60., -1.) == cells_mapped(tria, 0., 1.),
+                diagonals == "alternating")
+        << diagonals;
+    }
+  EXPECT_EQ(make_geometry<2>(
+              "set Type = rectangle\n" +
+              shape("Rectangle", "set Diagonals = alternating\n"))
+              .description(),
+            "rectangle 1 x 1, 1 x 1 subdivisions, alternating diagonals, 0 "
+            "global refinements");
+}
+
+
+
 TEST(Geometry, BoxCountsNamesMeasures)
 {
   const auto geometry = make_geometry<3>(
