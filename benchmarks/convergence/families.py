@@ -51,7 +51,8 @@ def rectangle(n, body="Body 1"):
 
 
 def receding_2d(ns):
-    """The half block 40 x 40: n x n squares, 2 triangles each; h = 40/n."""
+    """The half block 40 x 40: n x n squares, 2 triangles each (along the
+    alternating diagonals that the scene files set); h = 40/n."""
     return [(40.0 / n, rectangle(n)) for n in ns]
 
 

@@ -4,9 +4,11 @@
 Half block 40 x 40 mm (symmetry u_x = 0 on x = 0), E = 130000 MPa,
 nu = 0.2, plane strain, 50 MPa on the top, 100 MPa on the right side, on
 the rigid plane y = 0. Level L: n = 4 * 2^L squares per side, each split
-into two P1 triangles (the mesh of dpana's rectangle with n subdivisions;
-GetFEM's 'regular simplices'). The exact solution is the uniform stress
-state sigma_yy = -50 MPa: every nodal pressure is 50 MPa (frictionless).
+into two P1 triangles (GetFEM's 'regular simplices', whose diagonals
+alternate as on a checkerboard: the mesh of dpana's rectangle with n
+subdivisions and `Diagonals = alternating`, as the scene files set it).
+The exact solution is the uniform stress state sigma_yy = -50 MPa: every
+nodal pressure is 50 MPa (frictionless).
 
 Prints one JSON record (see hertz.py), with uniform_error =
 max |p - 50| / 50 over the contact nodes.

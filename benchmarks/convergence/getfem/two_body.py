@@ -5,8 +5,10 @@ strain, 50 MPa on the top, 100 MPa on the right side, symmetry u_x = 0 on
 x = 0) on an elastic foundation [0, 80] x [-80, 0] (E2 = E1 / ratio,
 nu = 0.2, symmetry on x = 0, fixed at its base), Coulomb friction mu = 1.
 Level L: the block has n = 4 * 2^L squares per side, the foundation 2n,
-each square split into two P1 triangles (GetFEM's 'regular simplices'),
-so the meshes match on the interface, as dpana's do. Contact: GetFEM's
+each square split into two P1 triangles (GetFEM's 'regular simplices',
+diagonals alternating as on a checkerboard: dpana's meshes, with
+`Diagonals = alternating`), so the meshes match on the interface, as
+dpana's do. Contact: GetFEM's
 nodal brick between non-matching meshes, the block's base the slave side
 (its nodes carry the multipliers), the foundation's top x <= 40 the master.
 
