@@ -87,9 +87,10 @@ namespace dpana
           "alternating: the direction alternates from rectangle to rectangle "
           "as on a checkerboard, so that the mesh is mirror-symmetric about "
           "every grid line. Choose it for a half model whose symmetry axis is "
-          "a side: its mesh is then the half of a symmetric whole, and the "
-          "tractions next to the axis carry no bias from the handedness of "
-          "the triangles (doc/geometry.md).");
+          "a side: the half and its mirror image then form one checkerboard, "
+          "whereas with one direction the diagonals of the whole change "
+          "direction at the axis, and the tractions next to that seam carry "
+          "an error of the first order in h (doc/geometry.md).");
       prm.declare_entry(
         "Load patch centre",
         repeat("0", dim),

@@ -24,7 +24,8 @@ namespace dpana
      * global refinements act on the simplices. In 2D, `Diagonals =
      * alternating` splits the rectangles along diagonals that alternate as
      * on a checkerboard instead, a mesh mirror-symmetric about every grid
-     * line (a half model is then the half of a symmetric mesh).
+     * line: a half model and its mirror image form one checkerboard,
+     * without a seam of the pattern at the axis.
      *
      * The optional grading is a vertex transformation acting on each
      * coordinate separately: with the grading centre $c$, the corners

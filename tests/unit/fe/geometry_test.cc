@@ -152,7 +152,8 @@ namespace
 
 
 
-// Diagonals = alternating: a mesh mirror-symmetric about its grid lines. On
+// Diagonals = alternating: a mesh mirror-symmetric about its grid lines (so
+// that a half model and its mirror image form one checkerboard). On
 // 6 x 3 rectangles the reflection about the middle line x = 30 (3 rectangles
 // on each side) maps the mesh onto itself; with every diagonal running one
 // way it maps each diagonal onto one the mesh does not have. The counts,
