@@ -79,12 +79,10 @@ TEST(HertzTwoBody, StiffFoundationApproachesRigidPlane)
       double       dN = 0, dT = 0;
       for (unsigned int j = 0; j < rigid->summary().n_elements; ++j)
         {
-          dN = std::max(dN,
-                        std::abs(stiff->normal_traction(j) -
-                                 rigid->normal_traction(j)));
-          dT = std::max(dT,
-                        std::abs(stiff->tangential_traction(j) -
-                                 rigid->tangential_traction(j)));
+          const auto [n, t] =
+            dpana::test::traction_differences(*stiff, j, *rigid, j);
+          dN = std::max(dN, n);
+          dT = std::max(dT, t);
         }
       std::cout << "mu = " << mu
                 << ": rigid plane a = " << rigid->summary().half_width

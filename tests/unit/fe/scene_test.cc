@@ -28,6 +28,7 @@ namespace
 {
   using dpana::test::make_scene;
   using dpana::test::receding_block;
+  using dpana::test::traction_differences;
 
   std::set<std::string>
   phase_names(const dpana::PhaseLog &log)
@@ -249,12 +250,9 @@ namespace
             std::abs(ew[j].s_max - eh[i].s_max) < 1e-9)
           {
             ++matched;
-            dN = std::max(dN,
-                          std::abs(half->normal_traction(i) -
-                                   whole->normal_traction(j)));
-            dT = std::max(dT,
-                          std::abs(half->tangential_traction(i) -
-                                   whole->tangential_traction(j)));
+            const auto [n, t] = traction_differences(*half, i, *whole, j);
+            dN                = std::max(dN, n);
+            dT                = std::max(dT, t);
           }
     EXPECT_EQ(matched, eh.size());
     return {dN, dT};

@@ -9,8 +9,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -79,6 +81,25 @@ namespace dpana
              "    set Pressure = top: 50; right: 100\n"
              "  end\n"
              "end\n";
+    }
+
+    /**
+     * |N| and the largest |T| component of the difference between the
+     * tractions of element @p i of @p a and element @p j of @p b.
+     */
+    template <int dim>
+    std::pair<double, double>
+    traction_differences(const scene::Scene<dim> &a,
+                         const unsigned int       i,
+                         const scene::Scene<dim> &b,
+                         const unsigned int       j)
+    {
+      double dT = 0;
+      for (unsigned int k = 0; k + 1 < dim; ++k)
+        dT = std::max(dT,
+                      std::abs(a.tangential_traction(i, k) -
+                               b.tangential_traction(j, k)));
+      return {std::abs(a.normal_traction(i) - b.normal_traction(j)), dT};
     }
 
     /**
