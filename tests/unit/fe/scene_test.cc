@@ -190,34 +190,12 @@ namespace
   std::string
   receding_with_friction(const std::string &diagonals, const bool whole)
   {
-    return std::string("set Dimension = 2\n"
-                       "subsection Body 1\n"
-                       "  subsection Geometry\n"
-                       "    set Type = rectangle\n"
-                       "    subsection Rectangle\n"
-                       "      set Lower corner = ") +
-           (whole ? "-40, 0\n      set Subdivisions = 32, 16\n" :
-                    "0, 0\n      set Subdivisions = 16, 16\n") +
-           "      set Upper corner = 40, 40\n"
-           "      set Diagonals = " +
-           diagonals +
-           "\n"
-           "    end\n"
-           "  end\n"
-           "  subsection Material\n"
-           "    set Young's modulus = 130000\n"
-           "    set Poisson's ratio = 0.2\n"
-           "  end\n" +
-           (whole ? "" :
-                    "  subsection Boundary conditions\n"
-                    "    set Symmetry = left\n"
-                    "  end\n") +
-           "  subsection Loads\n"
-           "    set Pressure = top: 50; right: 100" +
-           (whole ? "; left: 100" : "") +
-           "\n"
-           "  end\n"
-           "end\n"
+    return "set Dimension = 2\n" +
+           receding_block(whole ? 32 : 16,
+                          16,
+                          "",
+                          "set Diagonals = " + diagonals + "\n",
+                          whole) +
            "subsection Contact\n"
            "  set Boundary 1 = bottom\n"
            "  set Contact direction = 0, -1\n"

@@ -53,32 +53,41 @@ namespace dpana
      * section 4.2.1): the half
      * model [0, 40] x [0, 40] with @p nx x @p ny cells, symmetric on x = 0,
      * 50 MPa on the top and 100 MPa on the right side. @p material holds
-     * entries of its Material subsection ("set Poisson's ratio = 0\n").
+     * entries of its Material subsection ("set Poisson's ratio = 0\n"),
+     * @p rectangle more entries of its Rectangle subsection ("set Diagonals
+     * = alternating\n"). With @p whole, the whole block [-40, 40] x [0, 40]
+     * instead (@p nx cells across it), with 100 MPa on both sides and no
+     * condition on x = 0.
      */
     inline std::string
     receding_block(const unsigned int nx,
                    const unsigned int ny,
-                   const std::string &material)
+                   const std::string &material,
+                   const std::string &rectangle = "",
+                   const bool         whole     = false)
     {
-      return "subsection Body 1\n"
-             "  subsection Geometry\n"
-             "    set Type = rectangle\n"
-             "    subsection Rectangle\n"
-             "      set Lower corner = 0, 0\n"
+      return std::string("subsection Body 1\n"
+                         "  subsection Geometry\n"
+                         "    set Type = rectangle\n"
+                         "    subsection Rectangle\n"
+                         "      set Lower corner = ") +
+             (whole ? "-40" : "0") +
+             ", 0\n"
              "      set Upper corner = 40, 40\n"
              "      set Subdivisions = " +
-             std::to_string(nx) + ", " + std::to_string(ny) +
-             "\n"
+             std::to_string(nx) + ", " + std::to_string(ny) + "\n" + rectangle +
              "    end\n"
              "  end\n"
              "  subsection Material\n" +
-             material +
-             "  end\n"
-             "  subsection Boundary conditions\n"
-             "    set Symmetry = left\n"
-             "  end\n"
+             material + "  end\n" +
+             (whole ? "" :
+                      "  subsection Boundary conditions\n"
+                      "    set Symmetry = left\n"
+                      "  end\n") +
              "  subsection Loads\n"
-             "    set Pressure = top: 50; right: 100\n"
+             "    set Pressure = top: 50; right: 100" +
+             (whole ? "; left: 100" : "") +
+             "\n"
              "  end\n"
              "end\n";
     }
