@@ -296,7 +296,7 @@ def main():
           ""] + overview(summary)
     for name, codes in summary.items():
         md += family_section(name, codes, directory, plt)
-    md += comparison_section(summary)
+    md += both_codes_section(summary) + comparison_section(summary)
     plot_all(summary, directory, plt)
     plot_peer(summary, directory, plt)
     with open(os.path.join(directory, "convergence.md"), "w") as f:
@@ -387,6 +387,44 @@ def overview(summary):
                 fmt_reach(s["reach"][0.01]), fmt_reach(s["reach"][0.001]),
                 f"{last['dofs']}, {last['solve_time']:.3g}"]) + " |")
     return md + ["", "![speed against error](speed_vs_error.png)", ""]
+
+
+def converged_cell(s):
+    """A study's converged value with its observed order: "value (exact)",
+    "value, order p", or "value (finest level)" where the three finest
+    levels give no order."""
+    if s["exact"] is not None:
+        return f"{s['exact']:.7g} ({s['label']})"
+    order = s["extrapolated"]["order"]
+    return f"{s['reference']:.7g}, " + (
+        f"order {order:.2g}" if order is not None else "finest level")
+
+
+def both_codes_section(summary):
+    """Per family and plotted quantity, the two codes side by side: each
+    one's converged value and observed order, each one's time to 1 %
+    against its own converged value, and the ratio of solve times at equal
+    error (1 % and 0.1 %, against the common reference of
+    equal_error.common_reference())."""
+    md = ["## Per family: both codes", "",
+          "Per family and plotted quantity: the converged value of each "
+          "code with the observed order of its three finest levels, each "
+          "code's time to 1 % of its own converged value, and the ratio of "
+          "solve times, dpana / GetFEM, at equal error against the common "
+          "reference (the last table's cells at 1 and 0.1 %).", "",
+          "| family | quantity | dpana: converged, order | GetFEM: "
+          "converged, order | time to 1 %, dpana (s) | time to 1 %, GetFEM "
+          "(s) | ratio at 1 % | ratio at 0.1 % |",
+          "|---|---|---|---|---|---|---|---|"]
+    for name, sd, sg in compared_studies(summary):
+        if sd["quantity"] not in family_of(name).plot:
+            continue
+        ratios = equal_error_ratios(sd, sg)
+        md.append("| " + " | ".join([
+            name, sd["quantity"], converged_cell(sd), converged_cell(sg),
+            fmt_reach(sd["reach"][0.01]), fmt_reach(sg["reach"][0.01]),
+            ratio_cell(ratios[0.01]), ratio_cell(ratios[0.001])]) + " |")
+    return md + [""]
 
 
 def compared_studies(summary):
