@@ -112,6 +112,10 @@ def run_quantities(directory, dim, exact_normal=None):
             record["hertz"] = {"a": ref["a"], "N_max": ref["N_max"]}
         if ref.get("type") == "hertz sphere" and "a_moment" in ref:
             record["a_m"] = ref["a_moment"]
+            # The peak pressure of the elliptic fit (references.h), where
+            # the fit exists.
+            if "fit_max_pressure" in ref:
+                record["p0_fit"] = ref["fit_max_pressure"]
     # contact.csv holds 8 significant digits; the summary holds these two
     # to full precision.
     record["N_max"] = contact["max_normal_traction"]

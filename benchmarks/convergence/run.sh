@@ -2,7 +2,7 @@
 # Convergence sweeps with time: every scene family of families.py over its
 # refinement levels with the Release dpana, the GetFEM harness on the same
 # problems (getfem/), and the tables and plots of the run.
-#   ./benchmarks/convergence/run.sh                 all families (~15 min
+#   ./benchmarks/convergence/run.sh                 all families (about 70 min
 #                                                   on a loaded 2-core machine)
 #   ./benchmarks/convergence/run.sh --full          one more level each
 #   ./benchmarks/convergence/run.sh --out DIR       results into DIR

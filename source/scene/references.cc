@@ -164,6 +164,45 @@ namespace dpana
 
 
 
+    EllipticFit
+    elliptic_fit(const std::vector<PressurePiece> &pieces)
+    {
+      double p_max = 0;
+      for (const PressurePiece &p : pieces)
+        p_max = std::max(p_max, p.pressure);
+      // The normal equations of the weighted least squares in the basis
+      // 1, r^2: [sum w, sum w r2; sum w r2, sum w r2^2] (A, C) =
+      // (sum w p^2, sum w r2 p^2).
+      double m00 = 0, m01 = 0, m11 = 0, b0 = 0, b1 = 0;
+      for (const PressurePiece &p : pieces)
+        if (p.pressure > 1e-9 * p_max && p.area > 0)
+          {
+            const double r2 = p.r2_integral / p.area,
+                         p2 = p.pressure * p.pressure;
+            m00 += p.area;
+            m01 += p.area * r2;
+            m11 += p.area * r2 * r2;
+            b0 += p.area * p2;
+            b1 += p.area * r2 * p2;
+          }
+      EllipticFit  fit;
+      const double det = m00 * m11 - m01 * m01;
+      // Pieces at one radius only leave the normal matrix singular (to the
+      // round-off of its entries).
+      if (!(det > 1e-12 * m00 * m11))
+        return fit;
+      const double A = (b0 * m11 - m01 * b1) / det;
+      const double C = (m00 * b1 - m01 * b0) / det;
+      if (!(A > 0) || !(C < 0))
+        return fit;
+      fit.available    = true;
+      fit.max_pressure = std::sqrt(A);
+      fit.radius       = std::sqrt(-A / C);
+      return fit;
+    }
+
+
+
     template <int dim>
     void
     References<dim>::declare_parameters(dealii::ParameterHandler &prm)
@@ -521,9 +560,10 @@ namespace dpana
               a_element = r_max - r_min;
             }
         }
-      const double a_m = moment_contact_radius(pieces);
-      const double P   = summary.normal_resultant / model_fraction;
-      const double N   = summary.max_pressure;
+      const double      a_m = moment_contact_radius(pieces);
+      const EllipticFit fit = elliptic_fit(pieces);
+      const double      P   = summary.normal_resultant / model_fraction;
+      const double      N   = summary.max_pressure;
       check_hertz_load(P,
                        "the resultant of -N over Model fraction = " +
                          number(model_fraction));
@@ -548,6 +588,13 @@ namespace dpana
           << relative(a_edge, H.radius) << ", a_m " << relative(a_m, H.radius)
           << ", N_max " << relative(N, H.max_pressure) << ", P "
           << relative(P, hertz_load);
+      if (fit.available)
+        out << std::noshowpos << "; elliptic fit: p0 = " << fit.max_pressure
+            << " MPa, a = " << fit.radius << " mm, relative errors: p0 "
+            << std::showpos << relative(fit.max_pressure, H.max_pressure)
+            << ", a " << relative(fit.radius, H.radius);
+      else
+        out << "; no elliptic fit";
       Comparison c{"hertz sphere", out.str(), {}, ""};
       add_approach(c, summary.estimates, H.approach, centre_approach);
       c.values.insert(c.values.begin(),
@@ -563,6 +610,13 @@ namespace dpana
                        {"a_moment_error", relative(a_m, H.radius)},
                        {"N_max_error", relative(N, H.max_pressure)},
                        {"load_error", relative(P, hertz_load)}});
+      if (fit.available)
+        c.values.insert(c.values.end(),
+                        {{"fit_max_pressure", fit.max_pressure},
+                         {"a_fit", fit.radius},
+                         {"fit_max_pressure_error",
+                          relative(fit.max_pressure, H.max_pressure)},
+                         {"a_fit_error", relative(fit.radius, H.radius)}});
       return c;
     }
 

@@ -100,6 +100,33 @@ namespace dpana
     moment_contact_radius(const std::vector<PressurePiece> &pieces);
 
     /**
+     * The elliptic fit of an axisymmetric pressure: whether it exists, the
+     * fitted peak pressure p0 and the fitted contact radius a_f.
+     */
+    struct EllipticFit
+    {
+      bool   available    = false;
+      double max_pressure = 0;
+      double radius       = 0;
+    };
+
+    /**
+     * The elliptic fit of @p pieces, the 3D counterpart of the 2D fit of
+     * estimate_pressure_profile(): the least squares fit, weighted by the
+     * areas, of the Hertz law squared, p^2 = p0^2 (1 - r^2 / a_f^2) =
+     * A + C r^2, to the squared pressures of the pressed pieces (p above
+     * 1e-9 of the largest), each taken at its mean r^2 (r2_integral /
+     * area); then p0 = sqrt(A) and a_f = sqrt(-A / C). Unlike the largest
+     * element pressure, which samples the peak with one element, p0 is
+     * fitted to every pressed element, and it converges as the pressure
+     * does where the peak element's mean stays below the peak. It needs
+     * two pressed pieces at different radii, C < 0 and A > 0; otherwise
+     * it is not available.
+     */
+    EllipticFit
+    elliptic_fit(const std::vector<PressurePiece> &pieces);
+
+    /**
      * The references a contact run is compared with, `subsection Contact /
      * subsection Reference`:
      *
