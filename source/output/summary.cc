@@ -21,14 +21,20 @@ namespace dpana
 
 
 
-      // The pressure estimates finer than an element (2D) and the measured
-      // approach (3D Hertz scenes), see scene/pressure_estimators.h.
+      // The pressure estimates finer than an element (2D), the resultant
+      // and centroid of the pressure (3D) and the measured approach (3D
+      // Hertz scenes), see scene/pressure_estimators.h.
       nlohmann::json
       estimates_to_json(const scene::PressureEstimates &est)
       {
         nlohmann::json j = nlohmann::json::object();
         if (est.approach_measured)
           j["approach"] = est.approach;
+        if (est.point_centroid_available)
+          {
+            j["pressure_resultant"]      = est.resultant;
+            j["pressure_centroid_point"] = est.point_centroid;
+          }
         if (!est.available)
           return j;
         j["mirrored_half_model"] = est.mirrored;
@@ -102,7 +108,8 @@ namespace dpana
           {"candidate_edge_warning", summary.candidate_edge_warning},
           {"rigid_displacements",
            std::vector<double>(res.alpha.begin(), res.alpha.end())}};
-      if (summary.estimates.available || summary.estimates.approach_measured)
+      if (summary.estimates.available || summary.estimates.approach_measured ||
+          summary.estimates.point_centroid_available)
         j["estimates"] = estimates_to_json(summary.estimates);
       j["zones"] = nlohmann::json::array();
       for (const auto &z : summary.zones)

@@ -123,6 +123,35 @@ namespace dpana
 
 
 
+      // 3D: the resultant and the centroid of p = max(-N, 0) over the
+      // elements, each element's constant pressure acting at its centroid
+      // (exact for the piecewise constant pressure).
+      template <int dim>
+      PressureEstimates
+      pressure_centroid(const contact_surface::ContactSurface<dim> &surface,
+                        const Eigen::VectorXd                      &r)
+      {
+        PressureEstimates      est;
+        double                 resultant = 0;
+        dealii::Tensor<1, dim> moment;
+        for (unsigned int j = 0; j < surface.n_elements(); ++j)
+          {
+            const auto  &e = surface.element(j);
+            const double f = std::max(-r(dim * j), 0.) * e.area;
+            resultant += f;
+            moment += f * e.centroid;
+          }
+        if (!(resultant > 0))
+          return est;
+        est.resultant                = resultant;
+        est.point_centroid_available = true;
+        for (unsigned int c = 0; c < dim; ++c)
+          est.point_centroid[c] = moment[c] / resultant;
+        return est;
+      }
+
+
+
       // The log line of the pressure estimates.
       void
       print_estimates(const PressureEstimates &est, std::ostream &out)
@@ -179,6 +208,8 @@ namespace dpana
           estimate_pressure_profile(pressure_elements(surface, res.r),
                                     centre * surface.surface_tangents()[0],
                                     symmetric_about_centre);
+      if (dim == 3 && in_contact)
+        summary.estimates = pressure_centroid(surface, res.r);
     }
 
 
@@ -219,6 +250,12 @@ namespace dpana
         }
       if (summary.estimates.available)
         print_estimates(summary.estimates, out);
+      if (summary.estimates.point_centroid_available)
+        out << "Pressure resultant " << summary.estimates.resultant
+            << " N, centroid (" << summary.estimates.point_centroid[0] << ", "
+            << summary.estimates.point_centroid[1] << ", "
+            << summary.estimates.point_centroid[2]
+            << ") mm (of the modelled surface)" << std::endl;
       if (summary.estimates.approach_measured)
         out << "Approach of the bodies (far points relative to the contact "
                "point, along the contact normal): "

@@ -4,6 +4,7 @@
 #ifndef dpana_scene_pressure_estimators_h
 #define dpana_scene_pressure_estimators_h
 
+#include <array>
 #include <vector>
 
 namespace dpana
@@ -32,7 +33,8 @@ namespace dpana
     struct PressureEstimates
     {
       // False in 3D, and in 2D when no element is pressed (the fields down
-      // to fit_centre).
+      // to fit_centre, but for the resultant, which 3D runs set with the
+      // point centroid below).
       bool available = false;
       // The surface is a half model, mirrored about s0.
       bool mirrored = false;
@@ -47,6 +49,13 @@ namespace dpana
       double fit_half_width   = 0;
       double fit_max_pressure = 0;
       double fit_centre       = 0;
+      // 3D: the centroid (x, y, z) of the pressure p = max(-N, 0) of the
+      // modelled surface (mm; a quarter model's lies in its quarter), each
+      // element's pressure acting at its centroid, and whether it was
+      // computed (an element in contact); resultant above holds the
+      // pressure's resultant (N).
+      bool                  point_centroid_available = false;
+      std::array<double, 3> point_centroid           = {{0, 0, 0}};
       // 3D Hertz scenes: the approach delta of the bodies measured from
       // their displacements (References::measure_approach(), mm), and
       // whether it was measured.

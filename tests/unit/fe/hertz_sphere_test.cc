@@ -174,6 +174,11 @@ TEST(HertzSphere, EllipticFitOfTheSampledPressure)
 //   0.2 % below p0 at h = a/5) and the discrete solution overshoots it by a
 //   few tenths of a percent;
 // - the outer edge of the elements in contact within one element of a;
+// - the centroid of the quarter's pressure at x = z = 3a/8 within 2 %:
+//   the Hertz law over a quarter disc has int x p dA = p0 pi a^3 / 16 and
+//   int p dA = pi p0 a^2 / 6; y, the height of the sphere above the plane
+//   at the elements' centroids, r^2 / 2R, averaged with the weight p,
+//   within 5 % of a^2 / 5R (the Hertz law's mean r^2 is 2 a^2 / 5);
 // - the approach of the sphere's centre (at the depth R below the contact
 //   point) within a/R = 10 % of Hertz's delta = a^2 / R and below it:
 //   delta is the approach of the distant points of a half-space, and at
@@ -210,6 +215,19 @@ TEST(HertzSphere, QuarterSphereOnRigidPlaneAgainstHertz)
       EXPECT_LT(std::abs(v["approach_at_centres_error"]), 0.05)
         << "level " << level;
       previous_a_m_error = v["a_moment_error"];
+      const auto &est    = scene->summary().estimates;
+      ASSERT_TRUE(est.point_centroid_available);
+      EXPECT_NEAR(est.resultant / 75000, 1.0, 1e-10);
+      std::cout << "level " << level << ": centroid of the pressure ("
+                << est.point_centroid[0] << ", " << est.point_centroid[1]
+                << ", " << est.point_centroid[2]
+                << "), 3a/8 = " << 3 * v["a"] / 8 << std::endl;
+      for (const unsigned int c : {0u, 2u})
+        EXPECT_NEAR(est.point_centroid[c] / (3 * v["a"] / 8), 1.0, 0.02)
+          << "level " << level << ", component " << c;
+      const double height = v["a"] * v["a"] / (5 * 40.);
+      EXPECT_NEAR(est.point_centroid[1] / height, 1.0, 0.05)
+        << "level " << level;
     }
 }
 
