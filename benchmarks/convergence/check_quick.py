@@ -101,16 +101,16 @@
    - hertz_ratio_1e3_mu0 (a rigid punch: the body 1000 times stiffer),
      N_max, h = 2, 1, 0.5, GetFEM 14796.05 MPa: -3.72, -1.36, -0.49;
      p = 1.5;
-   - hertz_sphere_rigid_nested (3D, section 3's levels), a_m against 3D
-     Hertz: p = 2.4.
    - hertz_cavity_mu0 (the circular body in a cavity), a_m, h = 1, 0.5,
      0.25 (3998 to 50166 dofs): the two codes' converged values lie 1 %
      apart here (README.md, "Where the two codes' converged values
      differ": the linearised contact kinematics), so the reference is
-     what the issue of this benchmark prescribes for a scene without a
-     closed form, dpana's own converged value: its finest level of the
-     full sweep, 14.528706 mm (h = 0.0625, 751 856 dofs; the two levels
-     before 14.530624, 14.530645): -1.06, -0.063, +0.013; p = 3.7.
+     dpana's own converged value, as for a scene without a closed form:
+     its finest level of the full sweep, 14.528706 mm (h = 0.0625,
+     751 856 dofs; the two levels before 14.530624, 14.530645): -1.06,
+     -0.063, +0.013; p = 3.7;
+   - hertz_sphere_rigid_nested (3D, section 3's levels), a_m and the
+     fitted p0 against 3D Hertz: p = 2.4 and 1.85.
    Not covered here: the 3D receding block, whose pressure against the
    plane limit oscillates by +-1 % over its coarse levels (its levels do
    not halve h). The checks themselves fail on errors that grow and on
@@ -154,7 +154,8 @@ LEVELS = (1.0, 0.5, 0.25)    # h of the levels: 0, 1, 2 global refinements
 # The band of observed orders of the quick sweeps (section 4).
 ORDER_BAND = (1.0, 4.0)
 # The quick sweeps (section 4): family, quantity, the h of its three
-# levels, the whole load, the reference (GetFEM's converged value).
+# levels, the whole load, the reference (GetFEM's converged value; in the
+# cavity dpana's own).
 QUICK_SWEEPS = (
     ("receding_2d_mu1", "N_max", (5.0, 2.5, 1.25), 2000.0, 72.48709),
     ("two_body_ratio_1", "x_p", (10.0, 5.0, 2.5), 2000.0, 20.08167),

@@ -118,10 +118,8 @@ namespace dpana
      * 1e-9 of the largest), each taken at its mean r^2 (r2_integral /
      * area); then p0 = sqrt(A) and a_f = sqrt(-A / C). Unlike the largest
      * element pressure, which samples the peak with one element, p0 is
-     * fitted to every pressed element, and it converges as the pressure
-     * does where the peak element's mean stays below the peak. It needs
-     * two pressed pieces at different radii, C < 0 and A > 0; otherwise
-     * it is not available.
+     * fitted to every pressed element. It needs two pressed pieces at
+     * different radii, C < 0 and A > 0; otherwise it is not available.
      */
     EllipticFit
     elliptic_fit(const std::vector<PressurePiece> &pieces);
