@@ -180,16 +180,22 @@ FAMILIES = [
            exact={"resultant": 2000.0}),
     Family("receding_3d_L80", "receding_3d_L80.prm", 3,
            receding_3d([4, 8, 12, 16, 24, 32]), receding_3d([48]),
-           quantities=("N_max", "N_first", "resultant"),
-           plot=("N_max", "N_first"),
+           quantities=("N_max", "N_first", "x_p", "resultant"),
+           plot=("x_p", "N_max", "N_first"),
            # With nu = 0 the plane solution solves the 3D problem: its
            # pressure at the axis, 83.31 MPa, from fine plane meshes of both
            # codes (dpana n = 128 ... 512, GetFEM n = 32 ... 128, each
-           # extrapolated; README.md), within about 1e-4.
-           exact={"N_max": 83.31, "N_first": 83.31, "resultant": 80000.0},
-           exact_label={"N_max": "plane limit", "N_first": "plane limit"},
-           note="N_max and N_first against the plane limit 83.31 MPa (nu = 0: "
-                "the plane solution is the 3D one), computed apart"),
+           # extrapolated; README.md), within about 1e-4; its pressure
+           # centroid, 13.7429 mm (prm/receding_2d_nu0_mu1.prm: dpana
+           # 13.742974, 13.743025, 13.742963 at n = 128, 256, 512; GetFEM
+           # 13.743115, 13.742903 at n = 64, 128), within about 1e-5.
+           exact={"N_max": 83.31, "N_first": 83.31, "x_p": 13.7429,
+                  "resultant": 80000.0},
+           exact_label={"N_max": "plane limit", "N_first": "plane limit",
+                        "x_p": "plane limit"},
+           note="N_max, N_first and x_p against the plane limits 83.31 MPa "
+                "and 13.7429 mm (nu = 0: the plane solution is the 3D one), "
+                "computed apart"),
     Family("two_body_ratio_1", "two_body_ratio_1.prm", 2,
            two_body([4, 8, 16, 32, 64, 128]), two_body([256]),
            quantities=BLOCK_Q, plot=("x_p", "N_max"),

@@ -27,7 +27,10 @@ per contact element of length or area |e|; compressive N < 0, p = -N):
               at the element centroids (a midpoint rule, low by about
               the elements' second moment about their centroids: 0.05 %
               at 818 elements on the sphere's cap);
-  x_p         the centroid of the pressure, int x p / int p (2D);
+  x_p         the centroid of the pressure in x, int x p / int p (in 3D
+              the x coordinate of the centroid in the contact plane x-z:
+              with the element centroids, exact for piecewise constant p
+              on flat elements);
   uniform_error  max |N - N_exact| / |N_exact| for a scene whose exact
               solution is a uniform traction.
 """
@@ -76,6 +79,7 @@ def traction_quantities(rows, dim, exact_normal=None):
         # 2 a^2 / 5 for the Hertz law p ~ sqrt(1 - r^2/a^2) on a disc.
         m2 = sum(f * (r["x"] ** 2 + r["z"] ** 2) for f, r in zip(force, rows))
         q["a_m"] = math.sqrt(2.5 * m2 / q["resultant"])
+        q["x_p"] = sum(f * r["x"] for f, r in zip(force, rows)) / sum(force)
     if exact_normal is not None:
         q["uniform_error"] = max(abs(r["N"] - exact_normal) for r in rows) \
             / abs(exact_normal)

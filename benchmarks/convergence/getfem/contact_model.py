@@ -261,8 +261,9 @@ def pressure_quantities(nodes, force, p):
     on the symmetry axis), the resultant, the half width at node
     resolution (the farthest node that carries a force, in x in 2D, in
     r = (x^2 + z^2)^1/2 in 3D), the moment estimate (2D: a_m = 2 (sum F x^2
-    / sum F)^1/2, with x_p = sum F x / sum F; 3D: a_m = (5/2 sum F r^2 /
-    sum F)^1/2), each exact for the elliptic Hertz law."""
+    / sum F)^1/2; 3D: a_m = (5/2 sum F r^2 / sum F)^1/2), each exact for
+    the elliptic Hertz law, and the pressure centroid in x, x_p = sum F x /
+    sum F."""
     total = force.sum()
     r = np.abs(nodes[0]) if len(nodes) == 2 else np.hypot(nodes[0], nodes[2])
     active = force > 1e-12 * total
@@ -273,9 +274,9 @@ def pressure_quantities(nodes, force, p):
     moment = (force * r * r).sum() / total
     if len(nodes) == 2:
         q["a_m"] = float(2 * np.sqrt(moment))
-        q["x_p"] = float((force * r).sum() / total)
     else:
         q["a_m"] = float(np.sqrt(2.5 * moment))
+    q["x_p"] = float((force * np.abs(nodes[0])).sum() / total)
     return q
 
 
