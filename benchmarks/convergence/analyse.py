@@ -211,8 +211,8 @@ def analyse_runs(runs):
                 continue
             # The Hertz values of the scene, from either code's records.
             hertz = (hertz_values(run) or hertz_values(
-                runs.get(("dpana", name), {"ok": []}))) if fam.hertz \
-                else None
+                runs.get(("dpana", name), {"ok": []})) or fam.hertz_values) \
+                if fam.hertz else None
             summary.setdefault(name, {})[code] = {
                 "studies": [{**study(run, q, fam.exact.get(q)),
                              "label": fam.exact_label.get(q, "exact")}

@@ -13,9 +13,11 @@ the first in the plot of all families (the pressure centroid for the two
 bodies, whose N_max sits on a singular edge).
 `exact` gives the exact value of a quantity where the problem has one; the
 others are measured against their Richardson-extrapolated value. `hertz`
-marks the scenes whose summary carries the plane Hertz formulas, shown next
-to the extrapolated a, a_m and N_max (Hertz assumes a << R; here a/R is
-0.2-0.4, so the converged answer need not equal it). `uniform` is the exact
+marks the scenes whose summary carries the Hertz formulas, shown next to
+the extrapolated a, a_m and N_max: the plane ones of the cylinder (Hertz
+assumes a << R; here a/R is 0.2-0.4, so the converged answer need not
+equal it), the 3D ones of the spheres (a/R = 0.10; N_max against p0).
+`uniform` is the exact
 uniform normal traction of a scene that has one.
 
 Adding a family (the circular Hertz body, the 3D sphere, ...) is one more
@@ -44,6 +46,10 @@ class Family:
     # how the tables name a value of exact that is not exact (default
     # "exact"), e.g. a limit computed apart
     exact_label: dict = field(default_factory=dict)
+    # The Hertz values {"a": ..., "N_max": ...} of a family with hertz set
+    # whose records do not carry them (sweeps from before the records
+    # kept the 3D Hertz reference of the spheres).
+    hertz_values: dict = None
 
 
 def rectangle(n, body="Body 1"):
@@ -338,8 +344,13 @@ for mu in ("mu0", "mu1"):
              + FRICTION[mu]))
 # The quantities of every sphere family; the contact carries the quarter
 # sphere's P/4 = 75 kN exactly.
+# The spheres against 3D Hertz (a = (3 P R (1 - nu^2) / (4 E))^(1/3),
+# p0 = 3 P / (2 pi a^2), P = 300 kN; for two equal spheres the same a and
+# p0), shown next to the converged a_m and N_max.
 SPHERE_Q = {"quantities": ("N_max", "a_m", "resultant"),
-            "plot": ("N_max", "a_m"), "exact": {"resultant": 75000.0}}
+            "plot": ("N_max", "a_m"), "exact": {"resultant": 75000.0},
+            "hertz": True,
+            "hertz_values": {"a": 4.050638287, "N_max": 8730.02956}}
 # The level families start at level -2, as GetFEM's sweeps paired with them:
 # on level 0, and for the one sphere on level -1, both codes are within 1 %
 # in a_m already, and then neither time to 1 % is known.
@@ -422,7 +433,7 @@ def vertex_variant(f):
                   patched(f.full), f.quantities, f.plot, dict(f.exact),
                   f.hertz, f.uniform,
                   f.note + "; patches around the vertices",
-                  dict(f.exact_label))
+                  dict(f.exact_label), f.hertz_values)
 
 
 FAMILIES += [vertex_variant(f) for f in list(FAMILIES)

@@ -114,6 +114,9 @@ def run_quantities(directory, dim, exact_normal=None):
     for ref in contact.get("references", []):
         if ref.get("type") == "hertz":
             record["hertz"] = {"a": ref["a"], "N_max": ref["N_max"]}
+        if ref.get("type") == "hertz sphere":
+            # 3D Hertz: the contact radius and the peak pressure p0.
+            record["hertz"] = {"a": ref["a"], "N_max": ref["N_max"]}
         if ref.get("type") == "hertz sphere" and "a_moment" in ref:
             record["a_m"] = ref["a_moment"]
             # The peak pressure of the elliptic fit (references.h), where
