@@ -17,8 +17,7 @@ marks the scenes whose summary carries the Hertz formulas, shown next to
 the extrapolated a, a_m and N_max: the plane ones of the cylinder (Hertz
 assumes a << R; here a/R is 0.2-0.4, so the converged answer need not
 equal it), the 3D ones of the spheres (a/R = 0.10; N_max against p0).
-`uniform` is the exact
-uniform normal traction of a scene that has one.
+`uniform` is the exact uniform normal traction of a scene that has one.
 
 Adding a family (the circular Hertz body, the 3D sphere, ...) is one more
 entry below.
@@ -343,10 +342,9 @@ for mu in ("mu0", "mu1"):
         note="Circular body in a cavity R = 120, both on graded gmsh meshes"
              + FRICTION[mu]))
 # The quantities of every sphere family; the contact carries the quarter
-# sphere's P/4 = 75 kN exactly.
-# The spheres against 3D Hertz (a = (3 P R (1 - nu^2) / (4 E))^(1/3),
-# p0 = 3 P / (2 pi a^2), P = 300 kN; for two equal spheres the same a and
-# p0), shown next to the converged a_m and N_max.
+# sphere's P/4 = 75 kN exactly. 3D Hertz, shown next to the converged a_m
+# and N_max: a = (3 P R (1 - nu^2) / (4 E))^(1/3), p0 = 3 P / (2 pi a^2),
+# P = 300 kN (for two equal spheres the same a and p0).
 SPHERE_Q = {"quantities": ("N_max", "a_m", "resultant"),
             "plot": ("N_max", "a_m"), "exact": {"resultant": 75000.0},
             "hertz": True,

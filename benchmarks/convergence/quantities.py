@@ -112,10 +112,8 @@ def run_quantities(directory, dim, exact_normal=None):
     rows = read_contact_csv(os.path.join(directory, "contact.csv"))
     record.update(traction_quantities(rows, dim, exact_normal))
     for ref in contact.get("references", []):
-        if ref.get("type") == "hertz":
-            record["hertz"] = {"a": ref["a"], "N_max": ref["N_max"]}
-        if ref.get("type") == "hertz sphere":
-            # 3D Hertz: the contact radius and the peak pressure p0.
+        if ref.get("type") in ("hertz", "hertz sphere"):
+            # Plane Hertz: a and N_max; 3D Hertz: the radius a and p0.
             record["hertz"] = {"a": ref["a"], "N_max": ref["N_max"]}
         if ref.get("type") == "hertz sphere" and "a_moment" in ref:
             record["a_m"] = ref["a_moment"]
