@@ -79,7 +79,8 @@ def traction_quantities(rows, dim, exact_normal=None):
         # 2 a^2 / 5 for the Hertz law p ~ sqrt(1 - r^2/a^2) on a disc.
         m2 = sum(f * (r["x"] ** 2 + r["z"] ** 2) for f, r in zip(force, rows))
         q["a_m"] = math.sqrt(2.5 * m2 / q["resultant"])
-        q["x_p"] = sum(f * r["x"] for f, r in zip(force, rows)) / sum(force)
+        q["x_p"] = sum(f * r["x"] for f, r in zip(force, rows)) \
+            / q["resultant"]
     if exact_normal is not None:
         q["uniform_error"] = max(abs(r["N"] - exact_normal) for r in rows) \
             / abs(exact_normal)
