@@ -21,7 +21,7 @@ import time
 import families
 import prm_edit
 import records as records_io
-from quantities import run_quantities
+from quantities import read_contact_csv, run_quantities
 
 
 def level_text(family, prm_dir, edits):
@@ -44,7 +44,10 @@ def level_text(family, prm_dir, edits):
     return text
 
 
-def run_level(dpana, family, prm_dir, level, h, edits, timeout):
+def run_level(dpana, family, prm_dir, level, h, edits, timeout,
+              tractions=False):
+    """The record of one level (quantities.run_quantities); with
+    @p tractions also its rows of contact.csv, under "tractions"."""
     with tempfile.TemporaryDirectory(prefix=f"conv_{family.name}_") as tmp:
         prm = os.path.join(tmp, "scene.prm")
         with open(prm, "w") as f:
@@ -63,6 +66,9 @@ def run_level(dpana, family, prm_dir, level, h, edits, timeout):
                     "failed": f"exit {proc.returncode}: " + " | ".join(tail)}
         record = run_quantities(os.path.join(tmp, "output"), family.dim,
                                 family.uniform)
+        if tractions:
+            record["tractions"] = read_contact_csv(
+                os.path.join(tmp, "output", "contact.csv"))
     record.update({"level": level, "h": h, "wall": wall,
                    "edits": {k: str(getattr(v, "level", v))
                              for k, v in edits.items()}})
