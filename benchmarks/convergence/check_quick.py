@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Quick form of the convergence sweeps (a ctest, a few seconds).
+"""Quick form of the convergence sweeps (a ctest, about a minute).
 
 1. The extrapolation itself: richardson.py recovers q* and p from exact
    sequences q = q* + C h^p, with constant and with varying ratios of h,
